@@ -1,0 +1,54 @@
+// Run-time switches of the tracker, and the named configurations of the paper's
+// tests (1.1-1.4 RGB, 2.1-2.5 RGB-D) plus `best`. Capacities are in Config.hpp.
+#pragma once
+
+#include <cstdint>
+
+#include "cuetrack/core/Config.hpp"
+
+namespace cuetrack {
+
+enum class StateSpace : uint8_t { Image2d, Cylinder3d };
+enum class FeatureSampling : uint8_t {
+  Dense,
+  Sparse
+};  // Dense: Klein's old pool; Sparse: the paper's
+
+struct TrackerConfig {
+  // Paper parameters
+  int numParticles = 2000;        // <= kMaxParticles
+  int numWeakClassifiers = 32;    // M, <= kMaxWeakClassifiers
+  int numTrainingExamples = 140;  // <= kMaxTrainingExamples
+  StateSpace stateSpace = StateSpace::Image2d;
+  bool useGray = true;    // grayscale gradient features
+  bool useColour = true;  // colour average features
+  bool useDepth = false;  // depth gradient features
+  FeatureSampling sampling = FeatureSampling::Sparse;
+  bool dynamicPool = true;              // pool update (tests x.1); off in x.2
+  float velocityNoiseMm2PerS2 = 550.f;  // AR(1) velocity noise variance, 3D [mm^2/s^2]
+
+  // Beyond the paper (off in the paper's presets, on in `best`)
+  bool adaptCylinderSize = false;  // let H and D follow the target
+  bool lostDetection = false;      // declare lost, freeze learning, re-acquire
+};
+
+enum class Preset : uint8_t {
+  Test1_1,
+  Test1_2,
+  Test1_3,
+  Test1_4,  // RGB, 2D state (BoBoT, PROST)
+  Test2_1,
+  Test2_2,
+  Test2_3,
+  Test2_4,
+  Test2_5,  // RGB-D (BoBoT-D)
+  Best,
+};
+inline constexpr int kNumPresets = 10;
+
+TrackerConfig presetConfig(Preset preset);
+// "1.1" ... "2.5", "best"; returns false for an unknown name.
+bool parsePreset(const char* name, Preset* out);
+const char* presetName(Preset preset);
+
+}  // namespace cuetrack

@@ -1,0 +1,26 @@
+// Counts heap allocations in this process (operator new/delete and the C allocator).
+// Link cuetrack_alloc_counter into a test, then:
+//   AllocScope scope;            // starts counting
+//   tracker.update(frame);
+//   REQUIRE(scope.allocations() == 0);
+// A positive control belongs in every test that relies on it (see test_alloc_counter.cpp).
+#pragma once
+
+#include <cstdint>
+
+namespace cuetrack::test {
+
+// Totals since process start (all threads).
+uint64_t allocationCount();
+uint64_t deallocationCount();
+
+class AllocScope {
+ public:
+  AllocScope() : _start(allocationCount()) {}
+  uint64_t allocations() const { return allocationCount() - _start; }
+
+ private:
+  uint64_t _start;
+};
+
+}  // namespace cuetrack::test
