@@ -1,0 +1,58 @@
+// One interface for every source of frames: recordings (BoBoT video, RGB-D folder,
+// OTB folder, fakenect), synthetic scenes and the live Kinect. The tracker cannot
+// tell them apart. Frames land in caller-owned fixed buffers (FrameSlot), so a
+// source needs no per-frame allocation of its own.
+#pragma once
+
+#include <cstdint>
+
+#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/Frame.hpp"
+#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/Image.hpp"
+
+namespace cuetrack {
+
+// Caller-owned storage for one frame (about 1.5 MiB: keep it static or allocate once).
+struct FrameSlot {
+  FixedImage<Rgb8, kMaxImageWidth, kMaxImageHeight> rgb;
+  FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight> depthMm;  // [mm], 0 = none
+  bool hasDepth = false;
+  uint64_t timeUs = 0;            // capture time [us]
+  CameraIntrinsics intrinsics{};  // of rgb (source's own, or Kinect v1 defaults)
+  int index = 0;                  // 0-based frame number within the source
+  bool hasGroundTruth = false;    // the source has a ground-truth line for this frame
+  Box groundTruth{};              // [px]; empty() = target not visible
+
+  // Views for the tracker.
+  Frame frame() const {
+    Frame f;
+    f.rgb = rgb.view();
+    if (hasDepth) f.depthMm = depthMm.view();
+    f.timeUs = timeUs;
+    f.intrinsics = intrinsics;
+    return f;
+  }
+};
+
+enum class ReadStatus : uint8_t {
+  Ok,     // slot filled
+  End,    // no more frames (end of recording, or stream stopped cleanly)
+  Error,  // see error(): one line naming the file (and line) or device at fault
+};
+
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  virtual ReadStatus next(FrameSlot& out) = 0;
+  // Last error as one line, e.g. "seq/depth/000012.png: truncated PNG". Valid until the next call.
+  virtual const char* error() const = 0;
+  // Short name for logs and result files (file or folder name without extension).
+  virtual const char* name() const = 0;
+  // Frames in the source if known, else -1.
+  virtual int frameCount() const { return -1; }
+  // Frames skipped as unreadable so far (with the skip-bad-frames option).
+  virtual int skippedFrames() const { return 0; }
+};
+
+}  // namespace cuetrack
