@@ -332,3 +332,19 @@ TEST_CASE("encoding and decoding never allocate") {
   delete v;
   REQUIRE(control.allocations() >= 1);
 }
+
+TEST_CASE("a START command encodes to the exact bytes of the spec example") {
+  ctp_command_t c{};
+  c.type = CTP_CMD_START;
+  c.id = 1;
+  c.box_px[0] = 100;
+  c.box_px[1] = 80;
+  c.box_px[2] = 40;
+  c.box_px[3] = 60;
+  uint8_t wire[CTP_MAX_WIRE];
+  const size_t n = ctp_encode_command(&c, wire, sizeof wire);
+  const uint8_t expected[] = {0x04, 0x01, 0x10, 0x01, 0x02, 0x64, 0x02, 0x50,
+                              0x02, 0x28, 0x02, 0x3C, 0x03, 0xC0, 0xBD, 0x00};
+  REQUIRE(n == sizeof expected);
+  REQUIRE(std::memcmp(wire, expected, n) == 0);
+}
