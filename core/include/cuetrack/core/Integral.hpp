@@ -51,7 +51,8 @@ void rgb(const Rgb8* src, int srcStride, int width, int height, uint32_t* gray, 
 void depth(const uint16_t* srcMm, int srcStride, int width, int height, uint32_t* sumMm,
            uint32_t* count, int sumStride);
 void gray(const uint8_t* src, int srcStride, int width, int height, uint32_t* sum, int sumStride);
-// Name of the implementation the dispatchers above use ("avx2", "sse2", "neon", "scalar").
+// Name of the implementations the dispatchers above use ("avx2+sse2": AVX2 for rgb, SSE2
+// for depth and gray; "sse2", "neon", "scalar").
 const char* activeIsa();
 bool avx2Available();
 
