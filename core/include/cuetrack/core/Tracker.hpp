@@ -12,9 +12,16 @@
 #include <cstdint>
 
 #include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/FeaturePool.hpp"
 #include "cuetrack/core/Frame.hpp"
+#include "cuetrack/core/Gate.hpp"
+#include "cuetrack/core/IntegralChannels.hpp"
+#include "cuetrack/core/ParticleFilter.hpp"
+#include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/StrongClassifier.hpp"
 #include "cuetrack/core/TrackResult.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
+#include "cuetrack/core/TrainingSet.hpp"
 
 namespace cuetrack {
 
@@ -44,8 +51,51 @@ class Tracker {
   void reset();  // back to Idle; keeps the configuration
   const TrackerConfig& config() const;
 
+  // Whether the running track uses the 3D state / depth features (after any fallback).
+  bool uses3d() const { return _is3d; }
+  bool usesDepthFeatures() const { return _depthFeatures; }
+  // Read-only views of the components, for tests and diagnostics.
+  const FeaturePool& pool() const { return _pool; }
+  const TrainingSet& trainingSet() const { return _set; }
+  const StrongClassifier& classifier() const { return _strong; }
+  const ParticleFilter& particles() const { return _filter; }
+
  private:
-  // (components: defined by the core implementation)
+  uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
+  Box particleBox(const Particle& q) const;
+  Box clampToImage(const Box& b) const;
+  void addNegatives(const Box& around, int count, const PixelRect& roi);
+  void addExample(const Box& win, bool positive);
+  void learn(const Box& estimate, const PixelRect& roi);
+  bool medianDepthMm(const Frame& frame, const Box& box, float* out);
+
+  TrackerConfig _config{};
+  uint64_t _seed = 0;
+  const Clock* _clock = nullptr;
+  Rng _rng{};
+  MotionModel2d _motion2d{};
+  MotionModel3d _motion3d{};
+  UpdateGate _gate{};
+  LostDetector _lost{};
+  TrackState _state = TrackState::Idle;
+  bool _is3d = false;
+  bool _depthFeatures = false;
+  int _imageW = 0, _imageH = 0;
+  CameraIntrinsics _k{};
+  uint64_t _lastTimeUs = 0;
+  Box _lastBox{};
+  Particle _lastEstimate{};
+
+  IntegralChannels _channels;
+  FeaturePool _pool;
+  TrainingSet _set;
+  ResponseCache _cache;
+  StrongClassifier _strong;
+  ParticleFilter _filter;
+  Box _boxes[kMaxParticles];
+  float _scores[kMaxParticles];
+  float _featureErrors[kMaxPoolFeatures];
+  uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
 };
 
 }  // namespace cuetrack

@@ -13,6 +13,10 @@ enum class FeatureSampling : uint8_t {
   Dense,
   Sparse
 };  // Dense: Klein's old pool; Sparse: the paper's
+enum class Estimator : uint8_t {
+  MaxWeight,     // the particle with the highest weight (the paper)
+  WeightedMean,  // the weighted mean of all particles
+};
 
 struct TrackerConfig {
   // Paper parameters
@@ -30,6 +34,15 @@ struct TrackerConfig {
   // Beyond the paper (off in the paper's presets, on in `best`)
   bool adaptCylinderSize = false;  // let H and D follow the target
   bool lostDetection = false;      // declare lost, freeze learning, re-acquire
+  bool fallbackTo2d = false;       // 3D/depth requested but the frame has none: run 2D RGB
+
+  // Implementation parameters (docs/algorithm.md), the same in every preset
+  Estimator estimator = Estimator::MaxWeight;
+  float weightGain = 25.f;          // lambda: particle weight = exp(lambda * c), c in [-1, 1]
+  float learnConfidence = 0.55f;    // update gate: confidence (c + 1) / 2 at the estimate >= this
+  float learnConcentration = 0.5f;  // ... and weighted mean overlap of particles with it >= this
+  int negativesPerUpdate = 5;       // new negatives per learning step
+  int initialPositives = 5;         // the init box plus slightly shifted copies
 };
 
 enum class Preset : uint8_t {

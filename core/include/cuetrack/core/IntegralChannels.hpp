@@ -1,0 +1,43 @@
+// The frame's integral tables (gray, 2 alpha, beta, depth, valid count), computed
+// only over a region of interest: the part of the frame that particles and
+// negative examples can touch this step. Fixed storage sized for a full frame.
+#pragma once
+
+#include <cstdint>
+
+#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/Features.hpp"
+#include "cuetrack/core/Frame.hpp"
+
+namespace cuetrack {
+
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) x [y0, y1) [px]
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+};
+
+// The pixel rectangle covering box b, clipped to w x h (may be empty).
+PixelRect clipBox(const Box& b, int w, int h);
+
+class IntegralChannels {
+ public:
+  // Depth tables are all zero (no valid pixel) when the frame has no depth or useDepth is off.
+  void compute(const Frame& frame, const PixelRect& roi, bool useDepth);
+  const FrameTables& tables() const { return _t; }
+  // Mean valid depth in frame rectangle r [mm]; 0 when it has no valid pixel.
+  float meanDepthMm(const PixelRect& r) const;
+
+ private:
+  uint32_t _gray[kMaxIntegralCells];
+  int32_t _alpha2[kMaxIntegralCells];
+  int32_t _beta[kMaxIntegralCells];
+  uint32_t _depth[kMaxIntegralCells];
+  uint32_t _count[kMaxIntegralCells];
+  FrameTables _t{};
+};
+// 5 tables x 308,321 cells x 4 B = 6,166,420 B (the largest part of the tracker).
+static_assert(sizeof(IntegralChannels) <= 5u * kMaxIntegralCells * 4u + 128u,
+              "integral tables: 5 x (641 x 481) x 4 B");
+
+}  // namespace cuetrack

@@ -1,0 +1,85 @@
+// Condensation (Isard & Blake 1998) in fixed memory: particles, their motion
+// models, the 3D depth correction, weights and low-variance resampling.
+//
+// One particle layout serves both state spaces:
+//   2D (Klein):  p = (u, v, -) window centre [px], v = (du, dv, -) [px/frame],
+//                size = (w, h) [px]
+//   3D (paper):  p = (x, y, z) cylinder centre, camera coordinates [mm],
+//                v = velocity [mm/s], size = (D, H) diameter and height [mm]
+#pragma once
+
+#include <cstdint>
+
+#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/IntegralChannels.hpp"
+#include "cuetrack/core/Rng.hpp"
+
+namespace cuetrack {
+
+struct Particle {
+  float p[3] = {0.f, 0.f, 0.f};
+  float v[3] = {0.f, 0.f, 0.f};
+  float size[2] = {0.f, 0.f};
+};
+
+// 2D: first-order AR on the window centre plus scale and aspect random walks.
+// Noise std per frame, as fractions of the window's mean side sqrt(w h).
+struct MotionModel2d {
+  float positionNoise = 0.06f;
+  float velocityNoise = 0.02f;
+  float velocityDecay = 0.9f;  // du' = decay du + noise: keeps velocities bounded
+  float scaleNoise = 0.025f;   // std of ln(scale) per frame
+  float aspectNoise = 0.01f;   // std of ln(w/h) per frame
+  void predict(Particle& q, Rng& rng, float spread) const;
+};
+
+// 3D: the paper's AR(1), r' = r + v dt, v' = v + N(0, sigma^2 dt I), with sigma^2 the
+// velocity noise variance accrued per second [mm^2/s^2 per s]; plus a position
+// diffusion of positionNoise x D per sqrt(frame of 1/30 s) (see docs/algorithm.md:
+// the paper's 550 mm^2/s^2 alone moves particles by under a millimetre per frame),
+// and, when size adaptation is on, random walks of ln D and ln H.
+struct MotionModel3d {
+  float velocityNoiseMm2PerS2 = 550.f;
+  float positionNoise = 0.12f;
+  float sizeNoise = 0.f;  // std of ln(D), ln(H) per frame; 0 = fixed cylinder (paper)
+  void predict(Particle& q, Rng& rng, float dtS, float spread) const;
+};
+
+// The cylinder's projection: an upright cylinder seen by a pinhole camera is a
+// rectangle fx D / z wide and fy H / z high around the projected centre.
+Box projectCylinder(const Particle& q, const CameraIntrinsics& k);
+
+// Depth correction phi (paper eq. 2): average the valid depth inside the inner 10%
+// of the projection, move the particle along its viewing ray so its front surface
+// (centre depth - D/2) lies at that depth, and add the move / dt to its velocity.
+// Returns false (particle untouched) when the inner rectangle has no valid depth.
+bool correctDepth(Particle& q, const IntegralChannels& ch, const CameraIntrinsics& k, float dtS,
+                  int imageW, int imageH);
+
+class ParticleFilter {
+ public:
+  int size() const { return _n; }
+  void setSize(int n) { _n = n < 1 ? 1 : (n > kMaxParticles ? kMaxParticles : n); }
+  Particle& operator[](int i) { return _p[i]; }
+  const Particle& operator[](int i) const { return _p[i]; }
+  float* weights() { return _w; }
+  const float* weights() const { return _w; }
+  // Every particle a copy of q.
+  void fill(const Particle& q);
+  // Low-variance (systematic) resampling by the current weights; one uniform draw.
+  void resample(Rng& rng);
+  int argmaxWeight() const;
+  // Weighted mean of all particles (weights need not be normalised).
+  Particle weightedMean() const;
+
+ private:
+  Particle _p[kMaxParticles];
+  Particle _scratch[kMaxParticles];
+  float _w[kMaxParticles] = {};
+  int _n = 1;
+};
+// 2 x 2000 particles x 32 B + 2000 x 4 B = 136,000 B.
+static_assert(sizeof(Particle) == 32, "Particle is 8 floats");
+
+}  // namespace cuetrack

@@ -1,0 +1,79 @@
+// The observation model's training set: up to kMaxTrainingExamples labelled
+// windows. Each example is kept as a 32x32 scale-normalised patch of every cue
+// (area averages of the frame's integral tables) with its own small integral
+// tables, so any feature, including one sampled later, is evaluated on an old
+// example exactly as on a frame (rectangle means). Slot 0 holds the first
+// positive (an anchor against drift); the other positives and the negatives are
+// two FIFOs. ResponseCache keeps every pool feature's coded response on every
+// example, so a training step only codes what changed.
+#pragma once
+
+#include <cstdint>
+
+#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/FeaturePool.hpp"
+#include "cuetrack/core/Features.hpp"
+#include "cuetrack/core/WeakClassifier.hpp"
+
+namespace cuetrack {
+
+inline constexpr int kPatchSize = 32;                // cells per side
+inline constexpr int kPatchStride = kPatchSize + 1;  // table cells per row
+inline constexpr int kPatchCells = kPatchStride * kPatchStride;
+
+struct ExamplePatch {
+  float gray[kPatchCells];
+  float alpha2[kPatchCells];
+  float beta[kPatchCells];
+  float depth[kPatchCells];  // sum of valid depth per cell / cell area [mm]
+  float count[kPatchCells];  // valid fraction per cell
+  PatchTables tables() const;
+  static Box window() {
+    return Box{0.f, 0.f, static_cast<float>(kPatchSize), static_cast<float>(kPatchSize)};
+  }
+};
+
+// Area-averages window `win` (frame px) of the tables into a patch and integrates it.
+void extractPatch(const FrameTables& t, const Box& win, ExamplePatch* out);
+
+class TrainingSet {
+ public:
+  // capacity <= kMaxTrainingExamples; a quarter of it (at least 2) holds positives.
+  void reset(int capacity);
+  // Adds an example, replacing the oldest of its FIFO; returns the slot written.
+  int add(const FrameTables& t, const Box& win, bool positive);
+  int capacity() const { return _capacity; }
+  bool used(int slot) const { return _used[slot]; }
+  int8_t label(int slot) const { return _label[slot]; }
+  const int8_t* labels() const { return _label; }
+  const ExamplePatch& patch(int slot) const { return _patch[slot]; }
+  int numPositives() const;
+  int numNegatives() const;
+
+ private:
+  ExamplePatch _patch[kMaxTrainingExamples];
+  int8_t _label[kMaxTrainingExamples] = {};
+  bool _used[kMaxTrainingExamples] = {};
+  int _capacity = 0;
+  int _posCapacity = 0;
+  int _nextPos = 0;  // next FIFO slot for positives, in [1, _posCapacity)
+  int _nextNeg = 0;  // next FIFO slot for negatives, in [_posCapacity, _capacity)
+};
+// 140 examples x 5 channels x 33^2 cells x 4 B = 3,049,200 B.
+static_assert(sizeof(ExamplePatch) == 5u * kPatchCells * 4u, "patch: 5 x 33 x 33 floats");
+
+class ResponseCache {
+ public:
+  // Recodes one example (all pool features) or one feature (all used examples).
+  void refreshExample(int slot, const FeaturePool& pool, const TrainingSet& set);
+  void refreshFeature(int feature, const FeaturePool& pool, const TrainingSet& set);
+  void refreshAll(const FeaturePool& pool, const TrainingSet& set);
+  const Code* row(int feature) const { return _codes[feature]; }
+
+ private:
+  Code _codes[kMaxPoolFeatures][kMaxTrainingExamples];
+};
+// 256 features x 140 examples x 20 B = 716,800 B.
+static_assert(sizeof(Code) == 20, "Code is 20 bytes");
+
+}  // namespace cuetrack

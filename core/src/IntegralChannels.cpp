@@ -1,0 +1,65 @@
+#include "cuetrack/core/IntegralChannels.hpp"
+
+#include <cstring>
+
+#include "cuetrack/core/Integral.hpp"
+
+namespace cuetrack {
+
+PixelRect clipBox(const Box& b, int w, int h) {
+  PixelRect r;
+  r.x0 = fmath::floorToInt(b.x);
+  r.y0 = fmath::floorToInt(b.y);
+  r.x1 = fmath::floorToInt(b.x + b.w) + 1;
+  r.y1 = fmath::floorToInt(b.y + b.h) + 1;
+  if (r.x0 < 0) r.x0 = 0;
+  if (r.y0 < 0) r.y0 = 0;
+  if (r.x1 > w) r.x1 = w;
+  if (r.y1 > h) r.y1 = h;
+  if (r.x1 < r.x0) r.x1 = r.x0;
+  if (r.y1 < r.y0) r.y1 = r.y0;
+  return r;
+}
+
+void IntegralChannels::compute(const Frame& frame, const PixelRect& roi, bool useDepth) {
+  const int w = roi.width(), h = roi.height();
+  const int stride = w + 1;
+  _t.gray = _gray;
+  _t.alpha2 = _alpha2;
+  _t.beta = _beta;
+  _t.depth = _depth;
+  _t.count = _count;
+  _t.stride = stride;
+  _t.width = w;
+  _t.height = h;
+  _t.originX = roi.x0;
+  _t.originY = roi.y0;
+  integral::rgb(frame.rgb.row(roi.y0) + roi.x0, frame.rgb.stride, w, h, _gray, _alpha2, _beta,
+                stride);
+  const bool depthOk = useDepth && frame.hasDepth() && frame.depthMm.width == frame.rgb.width &&
+                       frame.depthMm.height == frame.rgb.height;
+  if (depthOk) {
+    integral::depth(frame.depthMm.row(roi.y0) + roi.x0, frame.depthMm.stride, w, h, _depth, _count,
+                    stride);
+  } else {
+    const std::size_t bytes =
+        static_cast<std::size_t>(stride) * static_cast<std::size_t>(h + 1) * sizeof(uint32_t);
+    std::memset(_depth, 0, bytes);
+    std::memset(_count, 0, bytes);
+  }
+}
+
+float IntegralChannels::meanDepthMm(const PixelRect& r) const {
+  int x0 = r.x0 - _t.originX, x1 = r.x1 - _t.originX;
+  int y0 = r.y0 - _t.originY, y1 = r.y1 - _t.originY;
+  if (x0 < 0) x0 = 0;
+  if (y0 < 0) y0 = 0;
+  if (x1 > _t.width) x1 = _t.width;
+  if (y1 > _t.height) y1 = _t.height;
+  if (x1 <= x0 || y1 <= y0) return 0.f;
+  const float n = detail::rect(_count, _t.stride, x0, y0, x1, y1);
+  if (n < 0.5f) return 0.f;
+  return detail::rect(_depth, _t.stride, x0, y0, x1, y1) / n;
+}
+
+}  // namespace cuetrack

@@ -1,0 +1,115 @@
+#include "cuetrack/core/ParticleFilter.hpp"
+
+namespace cuetrack {
+
+void MotionModel2d::predict(Particle& q, Rng& rng, float spread) const {
+  const float side = fmath::sqrtf(q.size[0] * q.size[1]);
+  for (int a = 0; a < 2; ++a) {
+    q.v[a] = velocityDecay * q.v[a] + spread * velocityNoise * side * rng.gaussian();
+    q.p[a] += q.v[a] + spread * positionNoise * side * rng.gaussian();
+  }
+  const float ls = scaleNoise * rng.gaussian();
+  const float la = aspectNoise * rng.gaussian();
+  q.size[0] *= fmath::fastExp(ls + la);
+  q.size[1] *= fmath::fastExp(ls - la);
+}
+
+void MotionModel3d::predict(Particle& q, Rng& rng, float dtS, float spread) const {
+  const float velStd = fmath::sqrtf(velocityNoiseMm2PerS2 * dtS);
+  const float posStd = spread * positionNoise * q.size[0] * fmath::sqrtf(dtS * 30.f);
+  for (int a = 0; a < 3; ++a) {
+    q.p[a] += q.v[a] * dtS + posStd * rng.gaussian();
+    q.v[a] += velStd * rng.gaussian();
+  }
+  if (sizeNoise > 0.f) {
+    q.size[0] *= fmath::fastExp(sizeNoise * rng.gaussian());
+    q.size[1] *= fmath::fastExp(sizeNoise * rng.gaussian());
+  }
+}
+
+Box projectCylinder(const Particle& q, const CameraIntrinsics& k) {
+  const float z = q.p[2];
+  if (!(z > 50.f)) return Box{};
+  const float inv = 1.f / z;
+  const float u = k.fx * q.p[0] * inv + k.cx, v = k.fy * q.p[1] * inv + k.cy;
+  const float w = k.fx * q.size[0] * inv, h = k.fy * q.size[1] * inv;
+  return Box{u - 0.5f * w, v - 0.5f * h, w, h};
+}
+
+bool correctDepth(Particle& q, const IntegralChannels& ch, const CameraIntrinsics& k, float dtS,
+                  int imageW, int imageH) {
+  const Box b = projectCylinder(q, k);
+  if (b.empty()) return false;
+  float iw = 0.1f * b.w, ih = 0.1f * b.h;
+  if (iw < 2.f) iw = 2.f;
+  if (ih < 2.f) ih = 2.f;
+  const Box inner{b.x + 0.5f * (b.w - iw), b.y + 0.5f * (b.h - ih), iw, ih};
+  const float d = ch.meanDepthMm(clipBox(inner, imageW, imageH));
+  if (!(d > 0.f)) return false;
+  const float zNew = d + 0.5f * q.size[0];
+  const float s = zNew / q.p[2];
+  const float invDt = dtS > 1e-4f ? 1.f / dtS : 0.f;
+  for (int a = 0; a < 3; ++a) {
+    const float moved = q.p[a] * s;
+    q.v[a] += (moved - q.p[a]) * invDt;
+    q.p[a] = moved;
+  }
+  return true;
+}
+
+void ParticleFilter::fill(const Particle& q) {
+  for (int i = 0; i < _n; ++i) {
+    _p[i] = q;
+    _w[i] = 1.f;
+  }
+}
+
+void ParticleFilter::resample(Rng& rng) {
+  float total = 0.f;
+  for (int i = 0; i < _n; ++i) total += _w[i];
+  if (!(total > 0.f)) {
+    for (int i = 0; i < _n; ++i) _w[i] = 1.f;
+    return;
+  }
+  const float step = total / static_cast<float>(_n);
+  float u = rng.uniform() * step;
+  float cum = _w[0];
+  int j = 0;
+  for (int i = 0; i < _n; ++i) {
+    while (u > cum && j < _n - 1) cum += _w[++j];
+    _scratch[i] = _p[j];
+    u += step;
+  }
+  for (int i = 0; i < _n; ++i) {
+    _p[i] = _scratch[i];
+    _w[i] = 1.f;
+  }
+}
+
+int ParticleFilter::argmaxWeight() const {
+  int best = 0;
+  for (int i = 1; i < _n; ++i)
+    if (_w[i] > _w[best]) best = i;
+  return best;
+}
+
+Particle ParticleFilter::weightedMean() const {
+  Particle m;
+  m.size[0] = m.size[1] = 0.f;
+  float total = 0.f;
+  for (int i = 0; i < _n; ++i) total += _w[i];
+  if (!(total > 0.f)) return _p[0];
+  const float inv = 1.f / total;
+  for (int i = 0; i < _n; ++i) {
+    const float w = _w[i] * inv;
+    for (int a = 0; a < 3; ++a) {
+      m.p[a] += w * _p[i].p[a];
+      m.v[a] += w * _p[i].v[a];
+    }
+    m.size[0] += w * _p[i].size[0];
+    m.size[1] += w * _p[i].size[1];
+  }
+  return m;
+}
+
+}  // namespace cuetrack

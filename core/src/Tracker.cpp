@@ -1,0 +1,396 @@
+#include "cuetrack/core/Tracker.hpp"
+
+namespace cuetrack {
+
+namespace {
+constexpr float kMinBoxPx = 8.f;        // smallest window side [px]
+constexpr float kNegativeRange = 1.5f;  // negatives within +-1.5 window sizes
+constexpr float kNegativeMaxOverlap = 0.3f;
+constexpr float kRoiMargin = 1.6f;  // ROI: particle boxes + this x mean size per side
+constexpr float kLostSpread = 3.f;  // motion noise gain while lost
+constexpr float kDefaultDtS = 1.f / 30.f;
+
+float frameDtS(uint64_t last, uint64_t now) {
+  if (now <= last) return kDefaultDtS;
+  const float dt = static_cast<float>(now - last) * 1e-6f;
+  return dt > 1.f ? 1.f : dt;
+}
+
+PixelRect unite(const PixelRect& a, const PixelRect& b) {
+  if (a.width() <= 0 || a.height() <= 0) return b;
+  if (b.width() <= 0 || b.height() <= 0) return a;
+  PixelRect r;
+  r.x0 = a.x0 < b.x0 ? a.x0 : b.x0;
+  r.y0 = a.y0 < b.y0 ? a.y0 : b.y0;
+  r.x1 = a.x1 > b.x1 ? a.x1 : b.x1;
+  r.y1 = a.y1 > b.y1 ? a.y1 : b.y1;
+  return r;
+}
+
+Box grow(const Box& b, float by) {
+  return Box{b.x - by * b.w, b.y - by * b.h, b.w * (1.f + 2.f * by), b.h * (1.f + 2.f * by)};
+}
+}  // namespace
+
+const char* toString(InitError e) {
+  switch (e) {
+    case InitError::None:
+      return "ok";
+    case InitError::EmptyBox:
+      return "empty box (w or h <= 0)";
+    case InitError::BoxOutsideImage:
+      return "box does not intersect the image";
+    case InitError::BoxTooSmall:
+      return "box smaller than 8x8 px";
+    case InitError::NoColour:
+      return "frame has no colour image";
+    case InitError::ImageTooLarge:
+      return "image larger than 640x480";
+    case InitError::NoDepth:
+      return "no depth (or no valid depth inside the box) for a depth configuration";
+    case InitError::NoIntrinsics:
+      return "3D state space needs camera intrinsics";
+  }
+  return "unknown error";
+}
+
+Tracker::Tracker() = default;
+
+void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock* clock) {
+  _config = config;
+  if (_config.numParticles < 1) _config.numParticles = 1;
+  if (_config.numParticles > kMaxParticles) _config.numParticles = kMaxParticles;
+  if (_config.numWeakClassifiers < 1) _config.numWeakClassifiers = 1;
+  if (_config.numWeakClassifiers > kMaxWeakClassifiers)
+    _config.numWeakClassifiers = kMaxWeakClassifiers;
+  if (_config.numTrainingExamples > kMaxTrainingExamples)
+    _config.numTrainingExamples = kMaxTrainingExamples;
+  if (_config.numTrainingExamples < 8) _config.numTrainingExamples = 8;
+  if (!_config.useGray && !_config.useColour && !_config.useDepth) _config.useGray = true;
+  _seed = seed;
+  _clock = clock;
+  _gate.minConfidence = _config.learnConfidence;
+  _gate.minConcentration = _config.learnConcentration;
+  _motion3d.velocityNoiseMm2PerS2 = _config.velocityNoiseMm2PerS2;
+  _motion3d.sizeNoise = _config.adaptCylinderSize ? 0.01f : 0.f;
+  reset();
+}
+
+const TrackerConfig& Tracker::config() const {
+  return _config;
+}
+
+void Tracker::reset() {
+  _state = TrackState::Idle;
+  _lost.reset();
+  _lastBox = Box{};
+}
+
+Box Tracker::clampToImage(const Box& b) const {
+  Box r = b;
+  const float iw = static_cast<float>(_imageW), ih = static_cast<float>(_imageH);
+  if (r.w > iw) r.w = iw;
+  if (r.h > ih) r.h = ih;
+  if (r.w < kMinBoxPx) r.w = kMinBoxPx;
+  if (r.h < kMinBoxPx) r.h = kMinBoxPx;
+  // Keep at least half the window inside the image.
+  r.x = fmath::clampf(r.x, -0.5f * r.w, iw - 0.5f * r.w);
+  r.y = fmath::clampf(r.y, -0.5f * r.h, ih - 0.5f * r.h);
+  return r;
+}
+
+Box Tracker::particleBox(const Particle& q) const {
+  if (_is3d) return projectCylinder(q, _k);
+  return Box{q.p[0] - 0.5f * q.size[0], q.p[1] - 0.5f * q.size[1], q.size[0], q.size[1]};
+}
+
+bool Tracker::medianDepthMm(const Frame& frame, const Box& box, float* out) {
+  const PixelRect r = clipBox(box, frame.depthMm.width, frame.depthMm.height);
+  constexpr int kBins = kMaxDepthMm / 10 + 1;
+  for (int i = 0; i < kBins; ++i) _depthHistogram[i] = 0;
+  uint32_t n = 0;
+  for (int y = r.y0; y < r.y1; ++y) {
+    const uint16_t* row = frame.depthMm.row(y);
+    for (int x = r.x0; x < r.x1; ++x) {
+      const uint16_t d = row[x];
+      if (d == 0 || d > kMaxDepthMm) continue;
+      ++_depthHistogram[d / 10];
+      ++n;
+    }
+  }
+  if (n == 0) return false;
+  uint32_t acc = 0;
+  for (int i = 0; i < kBins; ++i) {
+    acc += _depthHistogram[i];
+    if (2 * acc >= n) {
+      *out = static_cast<float>(i) * 10.f + 5.f;
+      return true;
+    }
+  }
+  return false;
+}
+
+void Tracker::addExample(const Box& win, bool positive) {
+  const int slot = _set.add(_channels.tables(), win, positive);
+  _cache.refreshExample(slot, _pool, _set);
+}
+
+void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
+  const float rx0 = static_cast<float>(roi.x0), ry0 = static_cast<float>(roi.y0);
+  const float rx1 = static_cast<float>(roi.x1), ry1 = static_cast<float>(roi.y1);
+  for (int k = 0; k < count; ++k) {
+    Box b = around;
+    for (int attempt = 0; attempt < 12; ++attempt) {
+      const float cx =
+          around.x + 0.5f * around.w + _rng.uniform(-kNegativeRange, kNegativeRange) * around.w;
+      const float cy =
+          around.y + 0.5f * around.h + _rng.uniform(-kNegativeRange, kNegativeRange) * around.h;
+      float w = around.w, h = around.h;
+      bool sized = false;
+      if (_is3d) {
+        // The size the target would have at the depth found there (paper 2.1).
+        const Box probe{cx - 2.f, cy - 2.f, 4.f, 4.f};
+        const float d = _channels.meanDepthMm(clipBox(probe, _imageW, _imageH));
+        if (d > 0.f) {
+          const float z = d + 0.5f * _lastEstimate.size[0];
+          w = _k.fx * _lastEstimate.size[0] / z;
+          h = _k.fy * _lastEstimate.size[1] / z;
+          sized = true;
+        }
+      }
+      if (!sized) {
+        const float s = fmath::fastExp(0.15f * _rng.gaussian());
+        w *= s;
+        h *= s;
+      }
+      if (w > rx1 - rx0) w = rx1 - rx0;
+      if (h > ry1 - ry0) h = ry1 - ry0;
+      if (w < kMinBoxPx) w = kMinBoxPx;
+      if (h < kMinBoxPx) h = kMinBoxPx;
+      b = Box{fmath::clampf(cx - 0.5f * w, rx0, rx1 - w),
+              fmath::clampf(cy - 0.5f * h, ry0, ry1 - h), w, h};
+      if (overlap(b, around) < kNegativeMaxOverlap) break;
+    }
+    addExample(b, false);
+  }
+}
+
+InitError Tracker::init(const Frame& frame, const Box& box) {
+  _state = TrackState::Idle;
+  if (frame.rgb.empty()) return InitError::NoColour;
+  if (frame.rgb.width > kMaxImageWidth || frame.rgb.height > kMaxImageHeight)
+    return InitError::ImageTooLarge;
+  if (box.empty()) return InitError::EmptyBox;
+  _imageW = frame.rgb.width;
+  _imageH = frame.rgb.height;
+  // Intersect the box with the image.
+  const float x0 = fmath::clampf(box.x, 0.f, static_cast<float>(_imageW));
+  const float y0 = fmath::clampf(box.y, 0.f, static_cast<float>(_imageH));
+  const float x1 = fmath::clampf(box.x + box.w, 0.f, static_cast<float>(_imageW));
+  const float y1 = fmath::clampf(box.y + box.h, 0.f, static_cast<float>(_imageH));
+  if (!(x1 > x0) || !(y1 > y0)) return InitError::BoxOutsideImage;
+  const Box b{x0, y0, x1 - x0, y1 - y0};
+  if (b.w < kMinBoxPx || b.h < kMinBoxPx) return InitError::BoxTooSmall;
+
+  const bool depthOk = frame.hasDepth() && frame.depthMm.width == frame.rgb.width &&
+                       frame.depthMm.height == frame.rgb.height;
+  _is3d = _config.stateSpace == StateSpace::Cylinder3d;
+  _depthFeatures = _config.useDepth;
+  float surfaceMm = 0.f;
+  if (_is3d || _depthFeatures) {
+    bool ok = depthOk;
+    if (ok && _is3d && !frame.intrinsics.valid()) {
+      if (!_config.fallbackTo2d) return InitError::NoIntrinsics;
+      ok = false;
+    }
+    if (ok && _is3d && !medianDepthMm(frame, b, &surfaceMm)) ok = false;
+    if (!ok) {
+      if (!_config.fallbackTo2d) return InitError::NoDepth;
+      _is3d = false;
+      _depthFeatures = false;
+    }
+  }
+  _k = frame.intrinsics;
+  _rng.reseed(_seed);
+  _lost.reset();
+
+  Particle q;
+  if (_is3d) {
+    // Silhouette width = fx D / z_centre with z_centre = surface + D/2.
+    const float D = b.w * surfaceMm / (_k.fx - 0.5f * b.w);
+    const float zc = surfaceMm + 0.5f * D;
+    const float H = b.h * zc / _k.fy;
+    const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
+    q.p[0] = (u - _k.cx) * zc / _k.fx;
+    q.p[1] = (v - _k.cy) * zc / _k.fy;
+    q.p[2] = zc;
+    q.size[0] = D;
+    q.size[1] = H;
+  } else {
+    q.p[0] = b.x + 0.5f * b.w;
+    q.p[1] = b.y + 0.5f * b.h;
+    q.size[0] = b.w;
+    q.size[1] = b.h;
+  }
+  _lastEstimate = q;
+  _lastBox = b;
+
+  const PixelRect roi = clipBox(grow(b, kNegativeRange + 0.6f), _imageW, _imageH);
+  _channels.compute(frame, roi, _depthFeatures || _is3d);
+
+  if (!_pool.build(_config.useGray, _depthFeatures, _config.useColour, _config.sampling, _rng))
+    return InitError::BoxTooSmall;  // cannot happen with kMaxPoolFeatures (static_assert-backed)
+  _set.reset(_config.numTrainingExamples);
+  addExample(b, true);  // slot 0: the anchor
+  for (int i = 1; i < _config.initialPositives; ++i) {
+    const float s = fmath::fastExp(0.03f * _rng.gaussian());
+    const Box j{b.x + 0.03f * b.w * _rng.gaussian(), b.y + 0.03f * b.h * _rng.gaussian(), b.w * s,
+                b.h * s};
+    addExample(j, true);
+  }
+  addNegatives(b, _set.numNegatives() + _config.numTrainingExamples,
+               roi);  // fill the negative FIFO
+  for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
+  _strong.train(_pool, _cache, _set, _config.numWeakClassifiers, _featureErrors);
+
+  _filter.setSize(_config.numParticles);
+  _filter.fill(q);
+  _lastTimeUs = frame.timeUs;
+  _state = TrackState::Tracking;
+  return InitError::None;
+}
+
+void Tracker::learn(const Box& estimate, const PixelRect& roi) {
+  addExample(estimate, true);
+  addNegatives(estimate, _config.negativesPerUpdate, roi);
+  if (_config.dynamicPool && _config.sampling == FeatureSampling::Sparse) {
+    const int replaced = _pool.update(_featureErrors, _rng);
+    if (replaced >= 0) _cache.refreshFeature(replaced, _pool, _set);
+  }
+  _strong.train(_pool, _cache, _set, _config.numWeakClassifiers, _featureErrors);
+}
+
+TrackResult Tracker::update(const Frame& frame) {
+  TrackResult r;
+  r.state = _state;
+  if (_state == TrackState::Idle) return r;
+  r.box = _lastBox;
+  if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
+  const uint64_t t0 = now();
+  const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
+  _lastTimeUs = frame.timeUs;
+  const float spread = _state == TrackState::Lost ? kLostSpread : 1.f;
+  const int n = _filter.size();
+
+  // Predict, and find the region the particles (and negatives around them) can touch.
+  PixelRect roi{};
+  float meanW = 0.f, meanH = 0.f;
+  for (int i = 0; i < n; ++i) {
+    Particle& q = _filter[i];
+    if (_is3d) {
+      _motion3d.predict(q, _rng, dtS, spread);
+    } else {
+      _motion2d.predict(q, _rng, spread);
+      // Keep windows sane and near the image.
+      const Box c = clampToImage(particleBox(q));
+      q.p[0] = c.x + 0.5f * c.w;
+      q.p[1] = c.y + 0.5f * c.h;
+      q.size[0] = c.w;
+      q.size[1] = c.h;
+    }
+    _boxes[i] = particleBox(q);
+    if (_boxes[i].empty()) continue;
+    meanW += _boxes[i].w;
+    meanH += _boxes[i].h;
+    roi = unite(roi, clipBox(_boxes[i], _imageW, _imageH));
+  }
+  meanW /= static_cast<float>(n);
+  meanH /= static_cast<float>(n);
+  roi = clipBox(Box{static_cast<float>(roi.x0) - kRoiMargin * meanW,
+                    static_cast<float>(roi.y0) - kRoiMargin * meanH,
+                    static_cast<float>(roi.width()) + 2.f * kRoiMargin * meanW,
+                    static_cast<float>(roi.height()) + 2.f * kRoiMargin * meanH},
+                _imageW, _imageH);
+  if (roi.width() < 2 || roi.height() < 2) roi = PixelRect{0, 0, _imageW, _imageH};
+  _channels.compute(frame, roi, _depthFeatures || _is3d);
+  const uint64_t t1 = now();
+
+  // 3D: pull each particle onto the measured surface (paper eq. 2).
+  if (_is3d && frame.hasDepth()) {
+    for (int i = 0; i < n; ++i) {
+      if (correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH))
+        _boxes[i] = particleBox(_filter[i]);
+    }
+  }
+  const uint64_t t2 = now();
+
+  // Weigh: w = exp(lambda (c - c_max)).
+  float cMax = -2.f;
+  for (int i = 0; i < n; ++i) {
+    const Box& b = _boxes[i];
+    const bool ok = !b.empty() && b.w >= 4.f && b.h >= 4.f && b.x + b.w > 0.f && b.y + b.h > 0.f &&
+                    b.x < static_cast<float>(_imageW) && b.y < static_cast<float>(_imageH);
+    _scores[i] = ok ? _strong.evaluate(_channels.tables(), b) : -1.f;
+    if (_scores[i] > cMax) cMax = _scores[i];
+  }
+  float* w = _filter.weights();
+  for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(_config.weightGain * (_scores[i] - cMax));
+
+  Particle est;
+  Box estBox;
+  float c;
+  if (_config.estimator == Estimator::MaxWeight) {
+    const int best = _filter.argmaxWeight();
+    est = _filter[best];
+    estBox = _boxes[best];
+    c = _scores[best];
+  } else {
+    est = _filter.weightedMean();
+    estBox = particleBox(est);
+    c = estBox.empty() ? -1.f : _strong.evaluate(_channels.tables(), estBox);
+  }
+  float concentration = 0.f, wsum = 0.f;
+  for (int i = 0; i < n; ++i) {
+    concentration += w[i] * overlap(_boxes[i], estBox);
+    wsum += w[i];
+  }
+  concentration = wsum > 0.f ? concentration / wsum : 0.f;
+  const float confidence = 0.5f * (c + 1.f);
+  const uint64_t t3 = now();
+
+  if (_config.lostDetection) _state = _lost.step(_state, confidence);
+  bool learned = false;
+  if (!estBox.empty() && _gate.open(confidence, concentration, _state)) {
+    _lastEstimate = est;
+    learn(clampToImage(estBox), roi);
+    learned = true;
+  }
+  const uint64_t t4 = now();
+
+  _filter.resample(_rng);
+  if (_state == TrackState::Lost) {
+    // Searching: forget velocities so the cloud spreads around the last place seen.
+    for (int i = 0; i < n; ++i) _filter[i].v[0] = _filter[i].v[1] = _filter[i].v[2] = 0.f;
+  }
+  if (!estBox.empty()) _lastBox = estBox;
+
+  r.state = _state;
+  r.box = _lastBox;
+  r.confidence = confidence;
+  r.learned = learned;
+  if (_is3d) {
+    r.hasPosition3d = true;
+    for (int a = 0; a < 3; ++a) r.positionMm[a] = est.p[a];
+  }
+  if (_clock != nullptr) {
+    const uint64_t t5 = now();
+    r.timesUs.features = static_cast<uint32_t>(t1 - t0);
+    r.timesUs.predict = static_cast<uint32_t>(t2 - t1);
+    r.timesUs.weigh = static_cast<uint32_t>(t3 - t2);
+    r.timesUs.learn = static_cast<uint32_t>(t4 - t3);
+    r.timesUs.total = static_cast<uint32_t>(t5 - t0);
+  }
+  return r;
+}
+
+}  // namespace cuetrack

@@ -1,0 +1,153 @@
+#include "cuetrack/core/WeakClassifier.hpp"
+
+namespace cuetrack {
+
+namespace {
+
+// Exponent + top mantissa bit of m^2: 4 steps per octave of m.
+int rawMagCode(float mag) {
+  const float m2 = mag * mag;
+  return static_cast<int>(fmath::floatBits(m2) >> 22);
+}
+
+void shares(float angle, float mag, FeatureKind kind, uint8_t* a, float* wc, float* wa, float* wb) {
+  const KindBinning& k = binning(kind);
+  const float t = fmath::clampf((mag - k.innerMag) / (k.outerMag - k.innerMag), 0.f, 1.f);
+  const float pos = angle * (static_cast<float>(kOrientBins) / fmath::kTwoPi) - 0.5f;
+  int i = fmath::floorToInt(pos);
+  const float frac = pos - static_cast<float>(i);
+  if (i < 0) i += kOrientBins;
+  if (i >= kOrientBins) i -= kOrientBins;
+  *a = static_cast<uint8_t>(i);
+  *wc = 1.f - t;
+  *wa = t * (1.f - frac);
+  *wb = t * frac;
+}
+
+constexpr float kVarPrior = 0.05f;  // ln-units^2 added to every fitted variance
+constexpr float kEps = 1e-7f;
+
+}  // namespace
+
+int magIndex(float mag, FeatureKind kind) {
+  const int base = rawMagCode(binning(kind).minMag);
+  const int i = rawMagCode(mag) - base;
+  return i < 0 ? 0 : (i >= kLutMags ? kLutMags - 1 : i);
+}
+
+float magOfIndex(int idx, FeatureKind kind) {
+  const int base = rawMagCode(binning(kind).minMag);
+  const uint32_t bits = (static_cast<uint32_t>(base + idx) << 22) | (1u << 21);
+  return fmath::sqrtf(fmath::bitsFloat(bits));
+}
+
+int angleIndex(float angleRad) {
+  int i = static_cast<int>(angleRad * (static_cast<float>(kLutAngles) / fmath::kTwoPi));
+  return i < 0 ? 0 : (i >= kLutAngles ? kLutAngles - 1 : i);
+}
+
+Code encode(const Response& r, FeatureKind kind) {
+  Code c;
+  if (!r.valid) return c;
+  c.valid = 1;
+  const float minMag = binning(kind).minMag;
+  c.lnMag = fmath::fastLog(r.mag > minMag ? r.mag : minMag);
+  shares(r.angle, r.mag, kind, &c.a, &c.wCentre, &c.wA, &c.wB);
+  c.angleIdx = static_cast<uint8_t>(angleIndex(r.angle));
+  c.magIdx = static_cast<uint8_t>(magIndex(r.mag, kind));
+  return c;
+}
+
+float WeakClassifier::binnedError(const Code* codes, const float* w, const int8_t* y, int n) {
+  float acc[2][kNumBins] = {};
+  for (int i = 0; i < n; ++i) {
+    const Code& c = codes[i];
+    float* h = acc[y[i] > 0 ? 0 : 1];
+    const float wi = w[i];
+    if (!c.valid) {
+      h[kInvalidBin] += wi;
+      continue;
+    }
+    const int b = 1 + c.a, b2 = 1 + (c.a + 1 == kOrientBins ? 0 : c.a + 1);
+    h[0] += wi * c.wCentre;
+    h[b] += wi * c.wA;
+    h[b2] += wi * c.wB;
+  }
+  float err = 0.f;
+  for (int b = 0; b < kNumBins; ++b) {
+    const float s = acc[0][b] + acc[1][b];
+    if (s > kEps) err += 4.f * acc[0][b] * acc[1][b] / s;
+  }
+  return err;
+}
+
+void WeakClassifier::fit(const Code* codes, const float* w, const int8_t* y, int n,
+                         FeatureKind kind) {
+  _kind = kind;
+  // s[class][bin][0..2]: sum w*share, sum w*share*ln m, sum w*share*(ln m)^2
+  float s[2][kNumBins][3] = {};
+  for (int i = 0; i < n; ++i) {
+    const Code& c = codes[i];
+    const int cls = y[i] > 0 ? 0 : 1;
+    const float wi = w[i];
+    if (!c.valid) {
+      s[cls][kInvalidBin][0] += wi;
+      continue;
+    }
+    const float l = c.lnMag, l2 = c.lnMag * c.lnMag;
+    const int bins[3] = {0, 1 + c.a, 1 + (c.a + 1 == kOrientBins ? 0 : c.a + 1)};
+    const float sh[3] = {c.wCentre, c.wA, c.wB};
+    for (int k = 0; k < 3; ++k) {
+      const float ws = wi * sh[k];
+      s[cls][bins[k]][0] += ws;
+      s[cls][bins[k]][1] += ws * l;
+      s[cls][bins[k]][2] += ws * l2;
+    }
+  }
+  {
+    const float p = s[0][kInvalidBin][0], q = s[1][kInvalidBin][0];
+    _invalid = (p - q) / (p + q + kEps);
+  }
+  // Weighted likelihood of each magnitude step per bin and class:
+  // mass / sigma * exp(-(ln m - mu)^2 / (2 sigma^2)) (the 1/(m sqrt(2 pi)) cancels in the ratio).
+  float dens[2][kOrientBins + 1][kLutMags];
+  float lnm[kLutMags];
+  for (int q = 0; q < kLutMags; ++q) {
+    const float m = magOfIndex(q, kind);
+    const float minMag = binning(kind).minMag;
+    lnm[q] = fmath::fastLog(m > minMag ? m : minMag);
+  }
+  for (int cls = 0; cls < 2; ++cls) {
+    for (int b = 0; b <= kOrientBins; ++b) {
+      const float mass = s[cls][b][0];
+      if (mass <= kEps) {
+        for (int q = 0; q < kLutMags; ++q) dens[cls][b][q] = 0.f;
+        continue;
+      }
+      const float mu = s[cls][b][1] / mass;
+      float var = s[cls][b][2] / mass - mu * mu;
+      if (var < 0.f) var = 0.f;
+      var += kVarPrior;
+      const float norm = mass / fmath::sqrtf(var);
+      const float k = -0.5f / var;
+      for (int q = 0; q < kLutMags; ++q) {
+        const float d = lnm[q] - mu;
+        dens[cls][b][q] = norm * fmath::fastExp(k * d * d);
+      }
+    }
+  }
+  for (int o = 0; o < kLutAngles; ++o) {
+    const float angle = (static_cast<float>(o) + 0.5f) * (fmath::kTwoPi / kLutAngles);
+    for (int q = 0; q < kLutMags; ++q) {
+      uint8_t a;
+      float wc, wa, wb;
+      shares(angle, magOfIndex(q, kind), kind, &a, &wc, &wa, &wb);
+      const int b1 = 1 + a, b2 = 1 + (a + 1 == kOrientBins ? 0 : a + 1);
+      const float p = wc * dens[0][0][q] + wa * dens[0][b1][q] + wb * dens[0][b2][q];
+      const float nn = wc * dens[1][0][q] + wa * dens[1][b1][q] + wb * dens[1][b2][q];
+      _lut[o * kLutMags + q] = (p - nn) / (p + nn + kEps);
+    }
+  }
+}
+
+}  // namespace cuetrack
