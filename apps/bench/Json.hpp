@@ -1,0 +1,23 @@
+// --json FILE: the stable schema of issue 7, documented in docs/bench-json.md.
+//   {"tracker", "config", "runs",
+//    "sequences": [{"name", "frames", "overlap", "hit", "pascal", "center_px",
+//                   "ms_median", "ms_mean", "allocs"}],
+//    "average": {"frames", "overlap", "hit", "pascal", "center_px", "ms_median",
+//                "ms_mean", "allocs"}}
+// One entry: that object; several: an array of them. Percentages are 0-100.
+// A figure that does not exist (tracker could not run, no centre distance) is null.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "Results.hpp"
+
+namespace cuetrack::bench {
+
+std::string toJson(const std::vector<EntryResult>& entries);
+// Writes toJson() to `path`; on failure fills `err` with one line and returns false.
+bool writeJson(const char* path, const std::vector<EntryResult>& entries, std::string* err);
+
+}  // namespace cuetrack::bench

@@ -1,0 +1,147 @@
+#include "Metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cuetrack::bench {
+
+// Same definition as cuetrack::overlap(), in double so that thresholds on exact
+// fractions (1/3, 1/2) are decided by the geometry, not by float rounding.
+double overlapDouble(const Box& a, const Box& b) {
+  if (a.empty() || b.empty()) return 0.0;
+  const double x0 = std::max<double>(a.x, b.x), y0 = std::max<double>(a.y, b.y);
+  const double x1 = std::min<double>(double(a.x) + a.w, double(b.x) + b.w);
+  const double y1 = std::min<double>(double(a.y) + a.h, double(b.y) + b.h);
+  if (x1 <= x0 || y1 <= y0) return 0.0;
+  const double inter = (x1 - x0) * (y1 - y0);
+  return inter / (double(a.w) * a.h + double(b.w) * b.h - inter);
+}
+
+FrameEval evaluateFrame(const Box& groundTruth, const Box& predicted) {
+  FrameEval e;
+  e.overlap = overlapDouble(groundTruth, predicted);
+  if (!groundTruth.empty() && !predicted.empty()) {
+    const double dx = (double(groundTruth.x) + 0.5 * double(groundTruth.w)) -
+                      (double(predicted.x) + 0.5 * double(predicted.w));
+    const double dy = (double(groundTruth.y) + 0.5 * double(groundTruth.h)) -
+                      (double(predicted.y) + 0.5 * double(predicted.h));
+    e.hasCenterDist = true;
+    e.centerDistPx = std::sqrt(dx * dx + dy * dy);
+  }
+  return e;
+}
+
+void RunAccumulator::add(const Box& groundTruth, const Box& predicted) {
+  const FrameEval e = evaluateFrame(groundTruth, predicted);
+  addOverlapOnly(e.overlap);
+  if (e.hasCenterDist) {
+    _centerSum += e.centerDistPx;
+    ++_centerFrames;
+  }
+}
+
+void RunAccumulator::addOverlapOnly(double overlapValue) {
+  ++_frames;
+  _overlapSum += overlapValue;
+  if (overlapValue > kHitThreshold) ++_hits;
+  if (overlapValue > kPascalThreshold) ++_pascals;
+}
+
+RunFigures RunAccumulator::figures() const {
+  RunFigures f;
+  f.frames = _frames;
+  if (_frames > 0) {
+    f.overlapPct = 100.0 * _overlapSum / _frames;
+    f.hitPct = 100.0 * _hits / _frames;
+    f.pascalPct = 100.0 * _pascals / _frames;
+  }
+  f.centerFrames = _centerFrames;
+  f.centerPx =
+      _centerFrames > 0 ? _centerSum / _centerFrames : std::numeric_limits<double>::quiet_NaN();
+  return f;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
+  const double upper = values[mid];
+  if (values.size() % 2 == 1) return upper;
+  const double lower =
+      *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid));
+  return 0.5 * (lower + upper);
+}
+
+Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<double>& frameTimesUs,
+                      const std::vector<double>& allocsPerRun) {
+  Figures f;
+  f.centerPx = std::numeric_limits<double>::quiet_NaN();
+  if (runs.empty()) return f;
+  double centerSum = 0.0;
+  int centerRuns = 0;
+  for (const RunFigures& r : runs) {
+    f.overlap += r.overlapPct;
+    f.hit += r.hitPct;
+    f.pascal += r.pascalPct;
+    if (r.centerFrames > 0) {
+      centerSum += r.centerPx;
+      ++centerRuns;
+    }
+  }
+  const double n = static_cast<double>(runs.size());
+  f.frames = runs.front().frames;
+  f.overlap /= n;
+  f.hit /= n;
+  f.pascal /= n;
+  if (centerRuns > 0) f.centerPx = centerSum / centerRuns;
+  if (!frameTimesUs.empty()) {
+    double sum = 0.0;
+    for (double t : frameTimesUs) sum += t;
+    f.msMean = sum / static_cast<double>(frameTimesUs.size()) / 1000.0;
+    f.msMedian = median(frameTimesUs) / 1000.0;
+  }
+  if (!allocsPerRun.empty()) {
+    double sum = 0.0;
+    for (double a : allocsPerRun) sum += a;
+    f.allocs = sum / static_cast<double>(allocsPerRun.size());
+  }
+  return f;
+}
+
+Figures averageFigures(const std::vector<Figures>& sequences) {
+  Figures a;
+  a.centerPx = std::numeric_limits<double>::quiet_NaN();
+  if (sequences.empty()) return a;
+  double centerSum = 0.0;
+  int centerSeqs = 0;
+  bool allStages = true;
+  for (const Figures& s : sequences) {
+    a.frames += s.frames;
+    a.overlap += s.overlap;
+    a.hit += s.hit;
+    a.pascal += s.pascal;
+    a.msMedian += s.msMedian;
+    a.msMean += s.msMean;
+    a.allocs += s.allocs;
+    for (int i = 0; i < 5; ++i) a.stageMs[i] += s.stageMs[i];
+    allStages = allStages && s.hasStages;
+    if (!std::isnan(s.centerPx)) {
+      centerSum += s.centerPx;
+      ++centerSeqs;
+    }
+  }
+  const double n = static_cast<double>(sequences.size());
+  a.overlap /= n;
+  a.hit /= n;
+  a.pascal /= n;
+  a.msMedian /= n;
+  a.msMean /= n;
+  a.allocs /= n;
+  for (double& s : a.stageMs) s /= n;
+  a.hasStages = allStages;
+  if (centerSeqs > 0) a.centerPx = centerSum / centerSeqs;
+  return a;
+}
+
+}  // namespace cuetrack::bench

@@ -1,0 +1,86 @@
+// The paper's evaluation protocol (García et al. 2012, Sec. 3; Klein et al.'s BoBoT
+// metrics; PROST's PASCAL score and centre distance), as plain functions so tests can
+// check them on hand-computed cases.
+//
+// Per evaluated frame (one that has a ground-truth line):
+//   overlap  = |GT ∩ P| / |GT ∪ P|, 0 when either box is empty; a frame whose
+//              ground truth is empty ("0 0 0 0": target not visible) counts, with 0;
+//   hit      = overlap > 1/3;   pascal = overlap > 0.5;
+//   centre distance [px] between box centres, only where BOTH boxes are non-empty:
+//              a frame where either is empty has no defined distance, so it is left
+//              out of the mean (it already scores 0 in overlap, hit and pascal).
+// Per run: mean overlap, hit rate and pascal score in percent (0-100), mean centre
+// distance over the frames that have one (NaN when there is none).
+// Over runs (seeds): plain means of the per-run figures (runs without a centre
+// distance are skipped); times pool every frame of every run.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cuetrack/core/Geometry.hpp"
+
+namespace cuetrack::bench {
+
+inline constexpr double kHitThreshold = 1.0 / 3.0;
+inline constexpr double kPascalThreshold = 0.5;
+
+double overlapDouble(const Box& a, const Box& b);  // IoU, 0 when either is empty
+
+struct FrameEval {
+  double overlap = 0.0;        // [0, 1]
+  bool hasCenterDist = false;  // both boxes non-empty
+  double centerDistPx = 0.0;   // [px], valid when hasCenterDist
+};
+FrameEval evaluateFrame(const Box& groundTruth, const Box& predicted);
+
+// Figures of one run over one sequence.
+struct RunFigures {
+  int frames = 0;           // evaluated frames
+  double overlapPct = 0.0;  // mean overlap x 100
+  double hitPct = 0.0;
+  double pascalPct = 0.0;
+  double centerPx = 0.0;  // NaN when no frame had both boxes
+  int centerFrames = 0;   // frames that entered centerPx
+};
+
+class RunAccumulator {
+ public:
+  void add(const Box& groundTruth, const Box& predicted);
+  void addOverlapOnly(double overlap);  // for callers that evaluated the frame already
+  RunFigures figures() const;
+  int frames() const { return _frames; }
+
+ private:
+  int _frames = 0;
+  double _overlapSum = 0.0;
+  int _hits = 0;
+  int _pascals = 0;
+  double _centerSum = 0.0;
+  int _centerFrames = 0;
+};
+
+// The figures the JSON schema and the tables carry, for one sequence or an average.
+struct Figures {
+  int frames = 0;           // evaluated frames per run (sum over sequences for an average)
+  double overlap = 0.0;     // [%]
+  double hit = 0.0;         // [%]
+  double pascal = 0.0;      // [%]
+  double centerPx = 0.0;    // [px], NaN = undefined
+  double msMedian = 0.0;    // tracking time per frame [ms]
+  double msMean = 0.0;      // [ms]
+  double allocs = 0.0;      // heap allocations while tracking, per run
+  double stageMs[5] = {0};  // cuetrack only: features, predict, weigh, learn, total (mean)
+  bool hasStages = false;
+};
+
+// Means over runs; `frameTimesUs` pools every tracked frame of every run.
+Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<double>& frameTimesUs,
+                      const std::vector<double>& allocsPerRun);
+// Macro average over sequences, as the paper's "Averages" columns: the mean of the
+// per-sequence figures (centre distance over the sequences that have one).
+Figures averageFigures(const std::vector<Figures>& sequences);
+
+double median(std::vector<double> values);  // 0 for none
+
+}  // namespace cuetrack::bench

@@ -1,0 +1,194 @@
+#include "Options.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+#include "Peers.hpp"
+#include "cuetrack/core/TrackerConfig.hpp"
+
+namespace cuetrack::bench {
+namespace {
+
+std::vector<std::string> splitComma(const std::string& s) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (start <= s.size()) {
+    const size_t comma = s.find(',', start);
+    const size_t end = comma == std::string::npos ? s.size() : comma;
+    if (end > start) out.push_back(s.substr(start, end - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+bool parseCount(const char* text, long min, long max, long* out) {
+  if (!text || !*text) return false;
+  errno = 0;
+  char* end = nullptr;
+  const long v = std::strtol(text, &end, 10);
+  if (errno != 0 || *end != '\0' || v < min || v > max) return false;
+  *out = v;
+  return true;
+}
+
+}  // namespace
+
+const char* usage() {
+  return "usage: cuetrack-bench [options] SEQUENCE...\n"
+         "Runs trackers over recorded sequences with the protocol of Garcia et al. 2012:\n"
+         "initialise at the first ground-truth box, track, score overlap / hit / PASCAL /\n"
+         "centre distance, average over runs (seeds).\n"
+         "\n"
+         "SEQUENCE: a BoBoT video (NAME.avi, ground truth NAME.gt.txt beside it), an RGB-D\n"
+         "  folder, an OTB folder, a fakenect recording (groundtruth.txt beside INDEX.txt),\n"
+         "  or synth:<scene>. A missing or broken sequence is reported and skipped; the\n"
+         "  exit code is then 1.\n"
+         "\n"
+         "  --gt FILE          ground truth for the next SEQUENCE\n"
+         "  --tracker T[,T]    cuetrack, opencv-kcf, opencv-csrt, opencv-mil, opencv-boosting,\n"
+         "                     opencv-medianflow, opencv-mosse, opencv-tld, or opencv-all\n"
+         "                     (repeatable; default cuetrack)\n"
+         "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best\n"
+         "                     (repeatable; default best)\n"
+         "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
+         "  --peer-runs N      runs for the OpenCV peers (default: --runs)\n"
+         "  --seed S           first seed (default 1)\n"
+         "  --frames N         use only the first N frames of each sequence\n"
+         "  --skip-bad-frames  let readers skip unreadable frames (counted) instead of failing\n"
+         "  --max-mem MIB      memory for one decoded sequence (default 4096)\n"
+         "  --json FILE        figures in the schema of docs/bench-json.md\n"
+         "  --markdown FILE    the tables as Markdown\n"
+         "  --paper table1|table3  put the paper's figures beside ours in the Markdown\n"
+         "  --csv DIR          per-frame overlaps, DIR/<sequence>.overlap.csv\n"
+         "  --plots DIR        overlap-over-time plots, DIR/<sequence>.overlap.png\n"
+         "  --results DIR      BoBoT result files, DIR/<sequence>/<tracker>.run<k>.txt\n"
+         "  --quiet            no progress on stderr\n";
+}
+
+bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std::string* err) {
+  *help = false;
+  std::vector<std::string> trackers, configs;
+  std::string pendingGt;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](const char** v) {
+      if (i + 1 >= argc) {
+        *err = a + " needs a value";
+        return false;
+      }
+      *v = argv[++i];
+      return true;
+    };
+    const char* v = nullptr;
+    long n = 0;
+    if (a == "-h" || a == "--help") {
+      *help = true;
+      return true;
+    } else if (a == "--gt") {
+      if (!value(&v)) return false;
+      pendingGt = v;
+    } else if (a == "--tracker") {
+      if (!value(&v)) return false;
+      for (const std::string& t : splitComma(v)) {
+        if (t == "opencv-all") {
+          for (int p = 0; p < kNumPeers; ++p) trackers.push_back(peerName(p));
+        } else if (t == "cuetrack" || isPeerName(t)) {
+          trackers.push_back(t);
+        } else {
+          *err = "--tracker: unknown tracker '" + t + "'";
+          return false;
+        }
+      }
+    } else if (a == "--config") {
+      if (!value(&v)) return false;
+      for (const std::string& c : splitComma(v)) {
+        Preset p;
+        if (!parsePreset(c.c_str(), &p)) {
+          *err = "--config: unknown configuration '" + c + "' (1.1 ... 1.4, 2.1 ... 2.5, best)";
+          return false;
+        }
+        configs.push_back(c);
+      }
+    } else if (a == "--runs" || a == "--peer-runs" || a == "--frames" || a == "--max-mem") {
+      if (!value(&v)) return false;
+      if (!parseCount(v, 1, 1000000, &n)) {
+        *err = a + ": '" + v + "' is not a positive whole number";
+        return false;
+      }
+      if (a == "--runs") o->runs = static_cast<int>(n);
+      if (a == "--peer-runs") o->peerRuns = static_cast<int>(n);
+      if (a == "--frames") o->maxFrames = static_cast<int>(n);
+      if (a == "--max-mem") o->maxMemMiB = static_cast<size_t>(n);
+    } else if (a == "--seed") {
+      if (!value(&v)) return false;
+      errno = 0;
+      char* end = nullptr;
+      const unsigned long long s = std::strtoull(v, &end, 10);
+      if (errno != 0 || *end != '\0' || *v == '-' || *v == '\0') {
+        *err = std::string("--seed: '") + v + "' is not a whole number";
+        return false;
+      }
+      o->seed = s;
+    } else if (a == "--json" || a == "--markdown" || a == "--csv" || a == "--plots" ||
+               a == "--results") {
+      if (!value(&v)) return false;
+      std::string& dst = a == "--json"       ? o->jsonPath
+                         : a == "--markdown" ? o->markdownPath
+                         : a == "--csv"      ? o->csvDir
+                         : a == "--plots"    ? o->plotDir
+                                             : o->resultsDir;
+      dst = v;
+    } else if (a == "--paper") {
+      if (!value(&v)) return false;
+      if (std::strcmp(v, "table1") == 0) {
+        o->paper = PaperReference::Table1;
+      } else if (std::strcmp(v, "table3") == 0) {
+        o->paper = PaperReference::Table3;
+      } else {
+        *err = std::string("--paper: '") + v + "' is not table1 or table3";
+        return false;
+      }
+    } else if (a == "--skip-bad-frames") {
+      o->skipBadFrames = true;
+    } else if (a == "--quiet") {
+      o->quiet = true;
+    } else if (a.size() > 1 && a[0] == '-') {
+      *err = "unknown option '" + a + "'";
+      return false;
+    } else {
+      o->sequences.push_back({a, pendingGt});
+      pendingGt.clear();
+    }
+  }
+  if (!pendingGt.empty()) {
+    *err = "--gt " + pendingGt + " is not followed by a sequence";
+    return false;
+  }
+  if (o->sequences.empty()) {
+    *err = "no sequence given";
+    return false;
+  }
+  if (trackers.empty()) trackers.push_back("cuetrack");
+  if (configs.empty()) configs.push_back("best");
+  if (o->peerRuns < 0) o->peerRuns = o->runs;
+  o->entries.clear();
+  for (const std::string& t : trackers) {
+    bool dup = false;
+    for (const EntrySpec& e : o->entries) dup = dup || (e.tracker == t && t != "cuetrack");
+    if (dup) continue;
+    if (t == "cuetrack") {
+      for (const std::string& c : configs) {
+        bool have = false;
+        for (const EntrySpec& e : o->entries) have = have || (e.tracker == t && e.config == c);
+        if (!have) o->entries.push_back({t, c, o->runs});
+      }
+    } else {
+      o->entries.push_back({t, "default", o->peerRuns});
+    }
+  }
+  return true;
+}
+
+}  // namespace cuetrack::bench

@@ -1,0 +1,36 @@
+// Command line of cuetrack-bench (see usage()).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "Report.hpp"
+#include "Runner.hpp"
+
+namespace cuetrack::bench {
+
+struct SequenceArg {
+  std::string spec;    // path or "synth:<scene>"
+  std::string gtPath;  // --gt given before it; empty = the reader's default
+};
+
+struct Options {
+  std::vector<SequenceArg> sequences;
+  std::vector<EntrySpec> entries;  // tracker x configuration, in table order
+  int runs = 10;
+  int peerRuns = -1;  // -1: same as runs
+  uint64_t seed = 1;
+  int maxFrames = 0;  // 0: whole sequences
+  size_t maxMemMiB = 4096;
+  bool skipBadFrames = false;
+  bool quiet = false;
+  std::string jsonPath, markdownPath, csvDir, plotDir, resultsDir;
+  PaperReference paper = PaperReference::None;
+};
+
+const char* usage();
+// False with one line in *err for a bad command line; *help when -h/--help was given.
+bool parseOptions(int argc, const char* const* argv, Options* out, bool* help, std::string* err);
+
+}  // namespace cuetrack::bench

@@ -1,0 +1,170 @@
+#include "Outputs.hpp"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace cuetrack::bench {
+namespace {
+
+bool closeChecked(FILE* f, const std::string& path, std::string* err) {
+  const bool bad = std::ferror(f) != 0;
+  if (std::fclose(f) != 0 || bad) {
+    *err = path + ": write failed: " + std::strerror(errno);
+    return false;
+  }
+  return true;
+}
+
+FILE* openForWrite(const std::string& path, std::string* err) {
+  FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) *err = path + ": cannot write: " + std::strerror(errno);
+  return f;
+}
+
+// Distinct colours (BGR) for up to 12 curves; cuetrack entries come first.
+const cv::Scalar kPalette[] = {{40, 40, 220},  {200, 90, 30},  {40, 160, 40}, {160, 40, 160},
+                               {20, 140, 220}, {140, 140, 20}, {90, 90, 90},  {200, 160, 120},
+                               {120, 60, 200}, {60, 200, 200}, {30, 90, 140}, {180, 30, 100}};
+
+}  // namespace
+
+std::string fileLabel(const EntryResult& e) {
+  return e.config == "default" || e.config.empty() ? e.tracker : e.tracker + "-" + e.config;
+}
+
+bool makeDirs(const std::string& path, std::string* err) {
+  std::string partial;
+  for (size_t i = 0; i <= path.size(); ++i) {
+    if (i == path.size() || path[i] == '/') {
+      if (!partial.empty() && ::mkdir(partial.c_str(), 0755) != 0 && errno != EEXIST) {
+        *err = partial + ": cannot create folder: " + std::strerror(errno);
+        return false;
+      }
+    }
+    if (i < path.size()) partial += path[i];
+  }
+  return true;
+}
+
+bool writeOverlapCsv(const std::string& path, const std::vector<EntryResult>& entries,
+                     size_t sequence, std::string* err) {
+  FILE* f = openForWrite(path, err);
+  if (!f) return false;
+  // Frames: those of the first entry that ran (all entries evaluate the same frames).
+  const SequenceResult* ref = nullptr;
+  std::fprintf(f, "frame");
+  for (const EntryResult& e : entries) {
+    std::fprintf(f, ",%s", e.label().c_str());
+    const SequenceResult& s = e.sequences[sequence];
+    if (!ref && s.ran) ref = &s;
+  }
+  std::fprintf(f, "\n");
+  for (size_t i = 0; ref && i < ref->frameIndex.size(); ++i) {
+    std::fprintf(f, "%d", ref->frameIndex[i]);
+    for (const EntryResult& e : entries) {
+      const SequenceResult& s = e.sequences[sequence];
+      if (s.ran && i < s.meanOverlap.size())
+        std::fprintf(f, ",%.4f", s.meanOverlap[i]);
+      else
+        std::fprintf(f, ",");
+    }
+    std::fprintf(f, "\n");
+  }
+  return closeChecked(f, path, err);
+}
+
+bool writeOverlapPlot(const std::string& path, const std::vector<EntryResult>& entries,
+                      size_t sequence, std::string* err) {
+  const int width = 900, height = 340;
+  const int left = 50, right = 200, top = 30, bottom = 40;  // margins [px]
+  const int plotW = width - left - right, plotH = height - top - bottom;
+  cv::Mat img(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+
+  int maxFrame = 1;
+  for (const EntryResult& e : entries) {
+    const SequenceResult& s = e.sequences[sequence];
+    if (s.ran && !s.frameIndex.empty() && s.frameIndex.back() > maxFrame)
+      maxFrame = s.frameIndex.back();
+  }
+  auto px = [&](double frame, double overlapValue) {
+    return cv::Point(left + static_cast<int>(frame / maxFrame * plotW),
+                     top + static_cast<int>((1.0 - overlapValue) * plotH));
+  };
+  const cv::Scalar grid(225, 225, 225), axis(0, 0, 0);
+  for (int i = 0; i <= 4; ++i) {
+    const double v = i * 0.25;
+    cv::line(img, px(0, v), px(maxFrame, v), grid, 1);
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%.2f", v);
+    cv::putText(img, buf, px(0, v) + cv::Point(-45, 4), cv::FONT_HERSHEY_SIMPLEX, 0.4, axis, 1,
+                cv::LINE_AA);
+  }
+  for (int i = 0; i <= 5; ++i) {
+    const int frame = maxFrame * i / 5;
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%d", frame);
+    cv::putText(img, buf, px(frame, 0) + cv::Point(-10, 18), cv::FONT_HERSHEY_SIMPLEX, 0.4, axis, 1,
+                cv::LINE_AA);
+  }
+  cv::rectangle(img, px(0, 1), px(maxFrame, 0), axis, 1);
+  cv::putText(img, "frame", cv::Point(left + plotW / 2 - 20, height - 6), cv::FONT_HERSHEY_SIMPLEX,
+              0.45, axis, 1, cv::LINE_AA);
+  std::string title = "overlap: ";
+  for (const EntryResult& e : entries)
+    if (!e.sequences[sequence].name.empty()) {
+      title += e.sequences[sequence].name;
+      break;
+    }
+  cv::putText(img, title, cv::Point(left, 20), cv::FONT_HERSHEY_SIMPLEX, 0.55, axis, 1,
+              cv::LINE_AA);
+
+  int curve = 0;
+  for (const EntryResult& e : entries) {
+    const SequenceResult& s = e.sequences[sequence];
+    const cv::Scalar colour = kPalette[curve % (sizeof kPalette / sizeof kPalette[0])];
+    const int legendY = top + 14 + 16 * curve;
+    ++curve;
+    std::string label = e.label();
+    if (!s.ran) label += " (cannot run)";
+    cv::line(img, cv::Point(width - right + 10, legendY - 4),
+             cv::Point(width - right + 30, legendY - 4), colour, 2);
+    cv::putText(img, label, cv::Point(width - right + 35, legendY), cv::FONT_HERSHEY_SIMPLEX, 0.4,
+                axis, 1, cv::LINE_AA);
+    if (!s.ran) continue;
+    for (size_t i = 1; i < s.frameIndex.size(); ++i)
+      cv::line(img, px(s.frameIndex[i - 1], s.meanOverlap[i - 1]),
+               px(s.frameIndex[i], s.meanOverlap[i]), colour, 1, cv::LINE_AA);
+  }
+  try {
+    if (cv::imwrite(path, img)) return true;
+    *err = path + ": cannot write PNG";
+  } catch (const cv::Exception& e) {
+    *err = path + ": cannot write PNG: " + e.what();
+  }
+  return false;
+}
+
+bool writeBobotResult(const std::string& path, const std::string& header,
+                      const std::vector<IndexedBox>& boxes, int imageWidth, int imageHeight,
+                      std::string* err) {
+  FILE* f = openForWrite(path, err);
+  if (!f) return false;
+  std::fprintf(f, "%s\n", header.c_str());
+  const double sx = imageWidth > 0 ? 1.0 / imageWidth : 0.0;
+  const double sy = imageHeight > 0 ? 1.0 / imageHeight : 0.0;
+  for (const IndexedBox& b : boxes) {
+    if (b.box.empty())
+      std::fprintf(f, "%d 0 0 0 0\n", b.index);
+    else
+      std::fprintf(f, "%d %.6f %.6f %.6f %.6f\n", b.index, b.box.x * sx, b.box.y * sy, b.box.w * sx,
+                   b.box.h * sy);
+  }
+  return closeChecked(f, path, err);
+}
+
+}  // namespace cuetrack::bench

@@ -1,0 +1,262 @@
+#include "Report.hpp"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <limits>
+
+#include "PaperFigures.hpp"
+
+namespace cuetrack::bench {
+namespace {
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+const char* const kStageNames[5] = {"features", "predict", "weigh", "learn", "total"};
+
+void appendf(std::string& out, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+void appendf(std::string& out, const char* fmt, ...) {
+  char buf[512];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, args);
+  va_end(args);
+  out += buf;
+}
+
+std::string num(double v, int decimals) {
+  if (std::isnan(v)) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+const EntryResult* findTracker(const std::vector<EntryResult>& entries, const char* tracker) {
+  for (const EntryResult& e : entries)
+    if (e.tracker == tracker) return &e;
+  return nullptr;
+}
+
+std::string fit(const std::string& s, size_t width) {
+  return s.size() <= width ? s : s.substr(0, width - 1) + "~";
+}
+
+// Text table in the paper's layout: per sequence two figures, then the averages.
+void textAccuracyTable(std::string& out, const std::vector<EntryResult>& entries, bool table1) {
+  const auto& seqs = entries.front().sequences;
+  appendf(out, "%-22s", "");
+  for (const SequenceResult& s : seqs) appendf(out, " %-15s", fit(s.name, 15).c_str());
+  appendf(out, " %-23s\n", "Averages");
+  appendf(out, "%-22s", "tracker");
+  for (size_t i = 0; i < seqs.size(); ++i)
+    appendf(out, " %7s %7s", table1 ? "Over." : "pascal", table1 ? "Hit" : "dist.");
+  appendf(out, " %7s %7s %7s\n", "cpu", table1 ? "Over." : "pascal", table1 ? "Hit" : "dist.");
+  for (const EntryResult& e : entries) {
+    appendf(out, "%-22s", fit(e.label(), 22).c_str());
+    for (const SequenceResult& s : e.sequences) {
+      if (!s.ran) {
+        appendf(out, " %15s", "cannot run");
+        continue;
+      }
+      const Figures& f = s.figures;
+      appendf(out, " %7s %7s", num(table1 ? f.overlap : f.pascal, 2).c_str(),
+              num(table1 ? f.hit : f.centerPx, 2).c_str());
+    }
+    const Figures a = e.average();
+    const bool any = e.sequencesRan() > 0;
+    appendf(out, " %7s %7s %7s", any ? num(a.msMean, 2).c_str() : "-",
+            any ? num(table1 ? a.overlap : a.pascal, 2).c_str() : "-",
+            any ? num(table1 ? a.hit : a.centerPx, 2).c_str() : "-");
+    if (any && e.sequencesRan() < static_cast<int>(e.sequences.size()))
+      appendf(out, "  (over %d of %zu sequences)", e.sequencesRan(), e.sequences.size());
+    out += "\n";
+  }
+}
+
+}  // namespace
+
+double speedRatio(const EntryResult& entry, const EntryResult& reference) {
+  double a = 0.0, b = 0.0;
+  for (size_t i = 0; i < entry.sequences.size() && i < reference.sequences.size(); ++i) {
+    if (!entry.sequences[i].ran || !reference.sequences[i].ran) continue;
+    a += entry.sequences[i].figures.msMean;
+    b += reference.sequences[i].figures.msMean;
+  }
+  return b > 0.0 ? a / b : kNan;
+}
+
+std::string textReport(const std::vector<EntryResult>& entries) {
+  std::string out;
+  if (entries.empty() || entries.front().sequences.empty()) return out;
+  out +=
+      "Overlap and hit rate [%] (the paper's Table 1 layout); cpu = mean ms per frame, "
+      "tracking only\n";
+  textAccuracyTable(out, entries, true);
+  out += "\nPASCAL score [%] and mean centre distance [px] (the paper's Table 2 layout)\n";
+  textAccuracyTable(out, entries, false);
+
+  const EntryResult* kcf = findTracker(entries, "opencv-kcf");
+  const EntryResult* csrt = findTracker(entries, "opencv-csrt");
+  out +=
+      "\nSpeed, averaged over sequences: ms per frame (tracking only, decoding excluded), "
+      "cuetrack per stage, heap allocations per run while tracking\n";
+  appendf(out, "%-22s %9s %9s %9s %9s %9s %9s %11s %7s %7s\n", "tracker", "median", "mean",
+          "features", "predict", "weigh", "learn", "allocs/run", "xKCF", "xCSRT");
+  for (const EntryResult& e : entries) {
+    if (e.sequencesRan() == 0) {
+      appendf(out, "%-22s cannot run on any sequence\n", fit(e.label(), 22).c_str());
+      continue;
+    }
+    const Figures a = e.average();
+    appendf(out, "%-22s %9s %9s", fit(e.label(), 22).c_str(), num(a.msMedian, 3).c_str(),
+            num(a.msMean, 3).c_str());
+    for (int i = 0; i < 4; ++i)
+      appendf(out, " %9s", a.hasStages ? num(a.stageMs[i], 3).c_str() : "-");
+    appendf(out, " %11s %7s %7s\n", num(a.allocs, 0).c_str(),
+            kcf ? num(speedRatio(e, *kcf), 2).c_str() : "-",
+            csrt ? num(speedRatio(e, *csrt), 2).c_str() : "-");
+  }
+  bool anyError = false;
+  for (const EntryResult& e : entries)
+    for (const SequenceResult& s : e.sequences)
+      if (!s.ran) {
+        if (!anyError) out += "\nNot run:\n";
+        anyError = true;
+        appendf(out, "  %s on %s: %s\n", e.label().c_str(), s.name.c_str(), s.error.c_str());
+      }
+  return out;
+}
+
+std::string markdownReport(const std::vector<EntryResult>& entries, PaperReference ref) {
+  std::string out;
+  if (entries.empty() || entries.front().sequences.empty()) return out;
+  const auto& seqs = entries.front().sequences;
+  char letter[8];
+
+  // Table 1 layout.
+  out += "| | ";
+  for (const SequenceResult& s : seqs)
+    appendf(out, "%s Over. | %s Hit | ", s.name.c_str(), s.name.c_str());
+  out += "cpu [ms] | Avg Over. | Avg Hit |\n|---|";
+  for (size_t i = 0; i < seqs.size(); ++i) out += "---:|---:|";
+  out += "---:|---:|---:|\n";
+  for (const EntryResult& e : entries) {
+    appendf(out, "| %s | ", e.label().c_str());
+    for (const SequenceResult& s : e.sequences) {
+      if (!s.ran)
+        out += "cannot run | cannot run | ";
+      else
+        appendf(out, "%s | %s | ", num(s.figures.overlap, 2).c_str(),
+                num(s.figures.hit, 2).c_str());
+    }
+    const Figures a = e.average();
+    if (e.sequencesRan() == 0)
+      out += "- | - | - |\n";
+    else
+      appendf(out, "%s | %s | %s |\n", num(a.msMean, 2).c_str(), num(a.overlap, 2).c_str(),
+              num(a.hit, 2).c_str());
+  }
+  if (ref == PaperReference::Table1) {
+    const char* tests[4] = {"1.1", "1.2", "1.3", "1.4"};
+    for (const char* t : tests) {
+      appendf(out, "| *paper %s* | ", t);
+      double sumO = 0, sumH = 0;
+      int n = 0;
+      bool all = true;
+      for (const SequenceResult& s : seqs) {
+        PaperCell c;
+        if (paperTable1(bobotLetter(s.name.c_str(), letter, sizeof letter), t, &c)) {
+          appendf(out, "*%.2f* | *%.2f* | ", c.overlap, c.hit);
+          sumO += c.overlap;
+          sumH += c.hit;
+          ++n;
+        } else {
+          out += "n/a | n/a | ";
+          all = false;
+        }
+      }
+      const double cpu = paperTable1CpuMs(t);
+      appendf(out, "*%s* | %s | %s |\n", num(cpu, 2).c_str(),
+              all && n > 0 ? ("*" + num(sumO / n, 2) + "*").c_str() : "n/a",
+              all && n > 0 ? ("*" + num(sumH / n, 2) + "*").c_str() : "n/a");
+    }
+  }
+
+  // Table 2 layout.
+  out += "\n| | ";
+  for (const SequenceResult& s : seqs)
+    appendf(out, "%s pascal | %s dist. [px] | ", s.name.c_str(), s.name.c_str());
+  out += "Avg pascal | Avg dist. [px] |\n|---|";
+  for (size_t i = 0; i < seqs.size(); ++i) out += "---:|---:|";
+  out += "---:|---:|\n";
+  for (const EntryResult& e : entries) {
+    appendf(out, "| %s | ", e.label().c_str());
+    for (const SequenceResult& s : e.sequences) {
+      if (!s.ran)
+        out += "cannot run | cannot run | ";
+      else
+        appendf(out, "%s | %s | ", num(s.figures.pascal, 2).c_str(),
+                num(s.figures.centerPx, 2).c_str());
+    }
+    const Figures a = e.average();
+    if (e.sequencesRan() == 0)
+      out += "- | - |\n";
+    else
+      appendf(out, "%s | %s |\n", num(a.pascal, 2).c_str(), num(a.centerPx, 2).c_str());
+  }
+
+  // Speed.
+  const EntryResult* kcf = findTracker(entries, "opencv-kcf");
+  const EntryResult* csrt = findTracker(entries, "opencv-csrt");
+  out += "\n| | median [ms] | mean [ms] |";
+  for (int i = 0; i < 4; ++i) appendf(out, " %s [ms] |", kStageNames[i]);
+  out += " allocs / run | x KCF | x CSRT |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const EntryResult& e : entries) {
+    if (e.sequencesRan() == 0) {
+      appendf(out, "| %s | cannot run | | | | | | | | |\n", e.label().c_str());
+      continue;
+    }
+    const Figures a = e.average();
+    appendf(out, "| %s | %s | %s |", e.label().c_str(), num(a.msMedian, 3).c_str(),
+            num(a.msMean, 3).c_str());
+    for (int i = 0; i < 4; ++i)
+      appendf(out, " %s |", a.hasStages ? num(a.stageMs[i], 3).c_str() : "-");
+    appendf(out, " %s | %s | %s |\n", num(a.allocs, 0).c_str(),
+            kcf ? num(speedRatio(e, *kcf), 2).c_str() : "-",
+            csrt ? num(speedRatio(e, *csrt), 2).c_str() : "-");
+  }
+
+  if (ref == PaperReference::Table3) {
+    out +=
+        "\nThe paper's Table 3 as printed (its own BoBoT-D Kinect sequences, which are not "
+        "the sequences above; Xeon W3565):\n\n| | ";
+    for (int i = 0; i < kPaperTable3Sequences; ++i)
+      appendf(out, "%s Over. | %s Hit | ", paperTable3Sequence(i), paperTable3Sequence(i));
+    out += "cpu [ms] | Avg Over. | Avg Hit |\n|---|";
+    for (int i = 0; i < kPaperTable3Sequences; ++i) out += "---:|---:|";
+    out += "---:|---:|---:|\n";
+    const char* tests[5] = {"2.1", "2.2", "2.3", "2.4", "2.5"};
+    for (const char* t : tests) {
+      appendf(out, "| paper %s | ", t);
+      for (int i = 0; i < kPaperTable3Sequences; ++i) {
+        PaperCell c{};
+        paperTable3(i, t, &c);
+        appendf(out, "%.2f | %.2f | ", c.overlap, c.hit);
+      }
+      PaperCell avg{};
+      paperTable3Average(t, &avg);
+      appendf(out, "%.2f | %.2f | %.2f |\n", paperTable3CpuMs(t), avg.overlap, avg.hit);
+    }
+  }
+
+  bool anyError = false;
+  for (const EntryResult& e : entries)
+    for (const SequenceResult& s : e.sequences)
+      if (!s.ran) {
+        if (!anyError) out += "\nNot run:\n\n";
+        anyError = true;
+        appendf(out, "- %s on %s: %s\n", e.label().c_str(), s.name.c_str(), s.error.c_str());
+      }
+  return out;
+}
+
+}  // namespace cuetrack::bench

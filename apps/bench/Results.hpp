@@ -1,0 +1,36 @@
+// What one benchmark call produces: for each tracker entry (a tracker, and for
+// cuetrack a configuration), the figures per sequence, plus what the reports need.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "Metrics.hpp"
+
+namespace cuetrack::bench {
+
+struct SequenceResult {
+  std::string name;   // file or folder name without extension
+  bool ran = false;   // false: the tracker could not run on it, or the sequence is broken
+  std::string error;  // one line: why not
+  Figures figures;
+  // Mean overlap over runs for each evaluated frame, in frame order (plots, CSV).
+  std::vector<int> frameIndex;
+  std::vector<double> meanOverlap;
+};
+
+struct EntryResult {
+  std::string tracker;  // "cuetrack", "opencv-kcf", ...
+  std::string config;   // "1.1" ... "best" for cuetrack, "default" for peers
+  int runs = 0;
+  std::vector<SequenceResult> sequences;  // one per sequence, in command-line order
+
+  std::string label() const {
+    return config == "default" || config.empty() ? tracker : tracker + " " + config;
+  }
+  // Macro average over the sequences it ran on.
+  Figures average() const;
+  int sequencesRan() const;
+};
+
+}  // namespace cuetrack::bench

@@ -1,0 +1,232 @@
+#include "Runner.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <opencv2/imgproc.hpp>
+
+namespace cuetrack::bench {
+
+Frame CachedFrame::frame() const {
+  Frame f;
+  f.rgb = RgbView{rgb.data(), width, height, width};
+  if (!depthMm.empty()) f.depthMm = DepthView{depthMm.data(), width, height, width};
+  f.timeUs = timeUs;
+  f.intrinsics = intrinsics;
+  return f;
+}
+
+uint64_t SteadyClock::nowUs() const {
+  return static_cast<uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
+                                   std::chrono::steady_clock::now().time_since_epoch())
+                                   .count());
+}
+
+bool loadSequence(FrameSource& source, int maxFrames, size_t maxBytes, Sequence* seq,
+                  std::string* err) {
+  seq->name = source.name();
+  seq->frames.clear();
+  seq->bytes = 0;
+  // The slot is 1.5 MiB: one for the whole process, reused.
+  static FrameSlot slot;
+  for (;;) {
+    if (maxFrames > 0 && static_cast<int>(seq->frames.size()) >= maxFrames) break;
+    const ReadStatus st = source.next(slot);
+    if (st == ReadStatus::End) break;
+    if (st == ReadStatus::Error) {
+      *err = source.error();
+      if (err->empty()) *err = seq->name + ": read error";
+      return false;
+    }
+    CachedFrame f;
+    f.index = slot.index;
+    f.width = slot.rgb.width();
+    f.height = slot.rgb.height();
+    const size_t px = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
+    f.rgb.assign(slot.rgb.data(), slot.rgb.data() + px);
+    if (slot.hasDepth && slot.depthMm.width() == f.width && slot.depthMm.height() == f.height)
+      f.depthMm.assign(slot.depthMm.data(), slot.depthMm.data() + px);
+    f.timeUs = slot.timeUs;
+    f.intrinsics = slot.intrinsics;
+    f.hasGroundTruth = slot.hasGroundTruth;
+    f.groundTruth = slot.groundTruth;
+    if (px > 0) {
+      const cv::Mat rgbMat(f.height, f.width, CV_8UC3, f.rgb.data());
+      cv::cvtColor(rgbMat, f.bgr, cv::COLOR_RGB2BGR);
+    }
+    seq->bytes += px * (2 * sizeof(Rgb8)) + f.depthMm.size() * sizeof(uint16_t);
+    seq->frames.push_back(std::move(f));
+    if (seq->bytes > maxBytes) {
+      *err = seq->name + ": more than " + std::to_string(maxBytes >> 20) +
+             " MiB of decoded frames; cut it with --frames N";
+      return false;
+    }
+  }
+  seq->skippedFrames = source.skippedFrames();
+  if (seq->frames.empty()) {
+    *err = seq->name + ": no frames";
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+double nowS() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+Progress::Progress(bool enabled) : _enabled(enabled), _tty(::isatty(2) != 0) {}
+
+void Progress::beginSequence(const std::string& name, int index, int count, long plannedUpdates) {
+  _seq = name;
+  _seqIndex = index;
+  _seqCount = count;
+  _planned = plannedUpdates;
+  _done = 0;
+  _seqStartS = nowS();
+}
+
+void Progress::beginRun(const std::string& label, int run, int runs, int frames) {
+  _label = label;
+  _run = run;
+  _runs = runs;
+  _frame = 0;
+  _frames = frames;
+}
+
+void Progress::tick(int frame) {
+  _frame = frame;
+  ++_done;
+  if (_enabled && _tty && nowS() - _lastPrintS > 0.25) print(false);
+}
+
+void Progress::endRun() {
+  if (!_enabled) return;
+  print(true);
+}
+
+void Progress::print(bool endOfRun) {
+  _lastPrintS = nowS();
+  const double elapsed = _lastPrintS - _seqStartS;
+  const double fps = elapsed > 0 ? _done / elapsed : 0.0;
+  const double leftS = fps > 0 ? (_planned - _done) / fps : 0.0;
+  const int left = static_cast<int>(leftS + 0.5);
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "[seq %d/%d %s] %s run %d/%d frame %d/%d  %.1f fps  %d:%02d left", _seqIndex + 1,
+                _seqCount, _seq.c_str(), _label.c_str(), _run + 1, _runs, _frame, _frames, fps,
+                left / 60, left % 60);
+  if (_tty)
+    std::fprintf(stderr, "\r\033[K%s%s", line, endOfRun ? "" : "");
+  else if (endOfRun)
+    std::fprintf(stderr, "%s\n", line);
+  if (_tty && endOfRun && _done >= _planned) std::fprintf(stderr, "\n");
+}
+
+SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const TrackerFactory& factory,
+                        const RunOptions& options, Progress& progress) {
+  SequenceResult result;
+  result.name = seq.name;
+
+  // Initialisation at the first ground-truth box.
+  size_t initAt = seq.frames.size();
+  for (size_t i = 0; i < seq.frames.size(); ++i) {
+    if (seq.frames[i].hasGroundTruth && !seq.frames[i].groundTruth.empty()) {
+      initAt = i;
+      break;
+    }
+  }
+  if (initAt == seq.frames.size()) {
+    result.error = "no ground-truth box to initialise from";
+    return result;
+  }
+  const CachedFrame& first = seq.frames[initAt];
+  const int tracked = static_cast<int>(seq.frames.size() - initAt - 1);
+
+  std::string err;
+  std::unique_ptr<BenchTracker> tracker = factory(spec, &err);
+  if (!tracker) {
+    result.error = err;
+    return result;
+  }
+
+  std::vector<RunFigures> runs;
+  std::vector<double> frameTimesUs;
+  std::vector<double> allocsPerRun;
+  std::vector<double> overlapSum;
+  double stageSumUs[5] = {0, 0, 0, 0, 0};
+  long stageFrames = 0;
+  std::vector<IndexedBox> boxes;
+  boxes.reserve(seq.frames.size());
+  frameTimesUs.reserve(static_cast<size_t>(tracked) * static_cast<size_t>(spec.runs));
+  SteadyClock clock;
+
+  for (int run = 0; run < spec.runs; ++run) {
+    if (!tracker->init(first, first.groundTruth, options.seed + static_cast<uint64_t>(run), &err)) {
+      result.error = err;
+      return result;
+    }
+    progress.beginRun(spec.tracker + (spec.config == "default" ? "" : " " + spec.config), run,
+                      spec.runs, tracked);
+    RunAccumulator acc;
+    boxes.clear();
+    for (size_t i = 0; i < initAt; ++i) boxes.push_back({seq.frames[i].index, Box{}});
+    boxes.push_back({first.index, first.groundTruth});
+    size_t evaluated = 0;
+    uint64_t allocs = 0;
+    for (size_t i = initAt + 1; i < seq.frames.size(); ++i) {
+      const CachedFrame& f = seq.frames[i];
+      double stageUs[5] = {0, 0, 0, 0, 0};
+      const uint64_t a0 = options.allocationCount ? options.allocationCount() : 0;
+      const uint64_t t0 = clock.nowUs();
+      const Box box = tracker->update(f, stageUs);
+      const uint64_t t1 = clock.nowUs();
+      if (options.allocationCount) allocs += options.allocationCount() - a0;
+      frameTimesUs.push_back(static_cast<double>(t1 - t0));
+      for (int s = 0; s < 5; ++s) stageSumUs[s] += stageUs[s];
+      ++stageFrames;
+      boxes.push_back({f.index, box});
+      if (f.hasGroundTruth) {
+        const FrameEval e = evaluateFrame(f.groundTruth, box);
+        acc.add(f.groundTruth, box);
+        if (run == 0) {
+          result.frameIndex.push_back(f.index);
+          overlapSum.push_back(0.0);
+        }
+        if (evaluated < overlapSum.size()) overlapSum[evaluated] += e.overlap;
+        ++evaluated;
+      }
+      progress.tick(static_cast<int>(i - initAt));
+    }
+    progress.endRun();
+    runs.push_back(acc.figures());
+    allocsPerRun.push_back(static_cast<double>(allocs));
+    if (!options.resultsDir.empty()) {
+      const std::string dir = options.resultsDir + "/" + seq.name;
+      const std::string label =
+          spec.config == "default" ? spec.tracker : spec.tracker + "-" + spec.config;
+      const std::string path = dir + "/" + label + ".run" + std::to_string(run + 1) + ".txt";
+      std::string werr;
+      const std::string header = seq.gtHeader.empty() ? "./" + seq.name : seq.gtHeader;
+      if (!makeDirs(dir, &werr) ||
+          !writeBobotResult(path, header, boxes, first.width, first.height, &werr))
+        std::fprintf(stderr, "cuetrack-bench: %s\n", werr.c_str());
+    }
+  }
+
+  result.ran = true;
+  result.figures = aggregateRuns(runs, frameTimesUs, allocsPerRun);
+  result.figures.hasStages = tracker->hasStages();
+  if (stageFrames > 0)
+    for (int s = 0; s < 5; ++s) result.figures.stageMs[s] = stageSumUs[s] / stageFrames / 1000.0;
+  result.meanOverlap.resize(overlapSum.size());
+  for (size_t i = 0; i < overlapSum.size(); ++i) result.meanOverlap[i] = overlapSum[i] / spec.runs;
+  return result;
+}
+
+}  // namespace cuetrack::bench

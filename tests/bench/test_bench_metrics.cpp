@@ -1,0 +1,112 @@
+// The benchmark's metrics on hand-computed cases, empty boxes included.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "Metrics.hpp"
+
+using namespace cuetrack;
+using namespace cuetrack::bench;
+
+TEST_CASE("overlap is intersection over union, hand-computed") {
+  // 10x10 at (0,0) and 10x10 at (5,0): intersection 50, union 150.
+  const FrameEval e = evaluateFrame(Box{0, 0, 10, 10}, Box{5, 0, 10, 10});
+  CHECK(e.overlap == Approx(1.0 / 3.0));
+  REQUIRE(e.hasCenterDist);
+  CHECK(e.centerDistPx == Approx(5.0));
+  // Contained box: 4x4 inside 8x8 -> 16 / 64.
+  CHECK(evaluateFrame(Box{0, 0, 8, 8}, Box{2, 2, 4, 4}).overlap == Approx(0.25));
+  // Identical boxes.
+  CHECK(evaluateFrame(Box{3, 4, 5, 6}, Box{3, 4, 5, 6}).overlap == Approx(1.0));
+  // Disjoint: overlap 0 but a centre distance (3-4-5 triangle of centres).
+  const FrameEval d = evaluateFrame(Box{0, 0, 2, 2}, Box{30, 40, 2, 2});
+  CHECK(d.overlap == 0.0);
+  REQUIRE(d.hasCenterDist);
+  CHECK(d.centerDistPx == Approx(50.0));
+}
+
+TEST_CASE("empty boxes score overlap 0 and have no centre distance") {
+  const Box gt{10, 10, 20, 20};
+  const FrameEval noPrediction = evaluateFrame(gt, Box{});
+  CHECK(noPrediction.overlap == 0.0);
+  CHECK_FALSE(noPrediction.hasCenterDist);
+  const FrameEval noTarget = evaluateFrame(Box{0, 0, 0, 0}, gt);
+  CHECK(noTarget.overlap == 0.0);
+  CHECK_FALSE(noTarget.hasCenterDist);
+  // Zero width alone is empty too.
+  CHECK(evaluateFrame(Box{10, 10, 0, 20}, gt).overlap == 0.0);
+  CHECK(evaluateFrame(Box{}, Box{}).overlap == 0.0);
+}
+
+TEST_CASE("run figures: hit > 1/3, PASCAL > 0.5, empty ground truth counts with 0") {
+  RunAccumulator acc;
+  acc.add(Box{0, 0, 10, 10}, Box{0, 0, 10, 10});  // 1.0: hit, pascal, dist 0
+  acc.add(Box{0, 0, 10, 10}, Box{5, 0, 10, 10});  // 1/3 exactly: neither hit nor pascal
+  acc.add(Box{0, 0, 10, 10}, Box{0, 0, 10, 5});   // 0.5 exactly: hit, not pascal; dist 2.5
+  acc.add(Box{}, Box{0, 0, 10, 10});              // target invisible: counts, 0, no dist
+  const RunFigures f = acc.figures();
+  CHECK(f.frames == 4);
+  CHECK(f.overlapPct == Approx(100.0 * (1.0 + 1.0 / 3.0 + 0.5 + 0.0) / 4.0));
+  CHECK(f.hitPct == Approx(25.0 * 2));  // 1.0 and 0.5
+  CHECK(f.pascalPct == Approx(25.0));   // only 1.0
+  CHECK(f.centerFrames == 3);
+  CHECK(f.centerPx == Approx((0.0 + 5.0 + 2.5) / 3.0));
+}
+
+TEST_CASE("a run where no frame has both boxes has no centre distance") {
+  RunAccumulator acc;
+  acc.add(Box{0, 0, 10, 10}, Box{});
+  const RunFigures f = acc.figures();
+  CHECK(f.frames == 1);
+  CHECK(f.overlapPct == 0.0);
+  CHECK(f.centerFrames == 0);
+  CHECK(std::isnan(f.centerPx));
+  CHECK(std::isnan(aggregateRuns({f}, {}, {}).centerPx));
+}
+
+TEST_CASE("aggregation over runs: means of run figures, times pooled") {
+  RunFigures a, b;
+  a.frames = b.frames = 10;
+  a.overlapPct = 80;
+  b.overlapPct = 60;
+  a.hitPct = 100;
+  b.hitPct = 90;
+  a.pascalPct = 90;
+  b.pascalPct = 70;
+  a.centerPx = 4;
+  a.centerFrames = 10;
+  b.centerPx = 0;
+  b.centerFrames = 0;  // excluded from the centre mean
+  const Figures f = aggregateRuns({a, b}, {1000, 3000, 2000, 10000}, {0, 4});
+  CHECK(f.frames == 10);
+  CHECK(f.overlap == Approx(70));
+  CHECK(f.hit == Approx(95));
+  CHECK(f.pascal == Approx(80));
+  CHECK(f.centerPx == Approx(4));
+  CHECK(f.msMedian == Approx(2.5));  // (2000 + 3000) / 2 us
+  CHECK(f.msMean == Approx(4.0));    // 16000 / 4 us
+  CHECK(f.allocs == Approx(2.0));
+}
+
+TEST_CASE("average over sequences is the macro mean, centre over those that have one") {
+  Figures s1, s2;
+  s1.frames = 100;
+  s2.frames = 50;
+  s1.overlap = 90;
+  s2.overlap = 70;
+  s1.centerPx = 6;
+  s2.centerPx = std::nan("");
+  s1.msMean = 2;
+  s2.msMean = 4;
+  const Figures a = averageFigures({s1, s2});
+  CHECK(a.frames == 150);
+  CHECK(a.overlap == Approx(80));
+  CHECK(a.centerPx == Approx(6));
+  CHECK(a.msMean == Approx(3));
+  CHECK(std::isnan(averageFigures({}).centerPx));
+}
+
+TEST_CASE("median of odd, even and empty sets") {
+  CHECK(median({3, 1, 2}) == 2);
+  CHECK(median({4, 1, 3, 2}) == Approx(2.5));
+  CHECK(median({}) == 0);
+}

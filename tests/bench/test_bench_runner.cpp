@@ -1,0 +1,248 @@
+// The runner on in-memory sequences: protocol (init at the first ground-truth box,
+// scoring of later frames), bad input (broken sequence, no ground truth, a tracker
+// that cannot run), the output files, and an OpenCV peer on real pixels.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+
+#include "Outputs.hpp"
+#include "Report.hpp"
+#include "Runner.hpp"
+#include "TrackerAdapters.hpp"
+
+using namespace cuetrack;
+using namespace cuetrack::bench;
+
+namespace {
+
+// A 160x120 textured background with a checkered 24x24 target moving 2 px per frame
+// to the right; ground truth is exact. Frame `errorAt` (if >= 0) fails to read.
+class MovingSquareSource final : public FrameSource {
+ public:
+  MovingSquareSource(int frames, int errorAt, bool gtVisible = true)
+      : _frames(frames), _errorAt(errorAt), _gtVisible(gtVisible) {}
+  ReadStatus next(FrameSlot& out) override {
+    if (_next == _errorAt) {
+      std::snprintf(_error, sizeof _error, "square/%06d.png: truncated PNG", _next);
+      return ReadStatus::Error;
+    }
+    if (_next >= _frames) return ReadStatus::End;
+    const int w = 160, h = 120, size = 24;
+    const int x0 = 20 + 2 * _next, y0 = 40;
+    out.rgb.resize(w, h);
+    out.hasDepth = false;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const uint8_t bg = static_cast<uint8_t>(((x * 37) ^ (y * 91)) & 0x3f) + 60;
+        Rgb8 p{bg, bg, bg};
+        if (x >= x0 && x < x0 + size && y >= y0 && y < y0 + size)
+          p = (((x - x0) / 6 + (y - y0) / 6) % 2) ? Rgb8{230, 30, 30} : Rgb8{20, 20, 200};
+        out.rgb.data()[y * w + x] = p;
+      }
+    out.index = _next;
+    out.timeUs = static_cast<uint64_t>(_next) * 33333u;
+    out.hasGroundTruth = true;
+    out.groundTruth = _gtVisible ? Box{float(x0), float(y0), float(size), float(size)} : Box{};
+    ++_next;
+    return ReadStatus::Ok;
+  }
+  const char* error() const override { return _error; }
+  const char* name() const override { return "square"; }
+
+ private:
+  int _frames, _errorAt, _next = 0;
+  bool _gtVisible;
+  char _error[128] = "";
+};
+
+// Reports a scripted box per frame: the ground truth shifted by `shiftPx` in x.
+class ShiftTracker final : public BenchTracker {
+ public:
+  explicit ShiftTracker(float shiftPx, bool refuse = false, std::vector<uint64_t>* seeds = nullptr)
+      : _shift(shiftPx), _refuse(refuse), _seeds(seeds) {}
+  bool init(const CachedFrame&, const Box&, uint64_t seed, std::string* err) override {
+    if (_seeds) _seeds->push_back(seed);
+    if (_refuse) *err = "cannot run: needs depth";
+    return !_refuse;
+  }
+  Box update(const CachedFrame& f, double* stageUs) override {
+    stageUs[4] = 1000;  // 1 ms total
+    Box b = f.groundTruth;
+    b.x += _shift;
+    return b;
+  }
+
+ private:
+  float _shift;
+  bool _refuse;
+  std::vector<uint64_t>* _seeds;
+};
+
+Sequence load(FrameSource& src) {
+  Sequence seq;
+  std::string err;
+  REQUIRE(loadSequence(src, 0, size_t(1) << 30, &seq, &err));
+  return seq;
+}
+
+std::string readAll(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+TEST_CASE("a broken sequence gives one line naming the file, not a partial result") {
+  MovingSquareSource src(10, 4);
+  Sequence seq;
+  std::string err;
+  CHECK_FALSE(loadSequence(src, 0, size_t(1) << 30, &seq, &err));
+  CHECK(err == "square/000004.png: truncated PNG");
+
+  MovingSquareSource empty(0, -1);
+  CHECK_FALSE(loadSequence(empty, 0, size_t(1) << 30, &seq, &err));
+  CHECK(err == "square: no frames");
+
+  MovingSquareSource big(10, -1);
+  CHECK_FALSE(loadSequence(big, 0, 100000, &seq, &err));  // 100 kB limit
+  CHECK(err.find("--frames") != std::string::npos);
+}
+
+TEST_CASE("--frames cuts the sequence; frames are decoded once with BGR copies for peers") {
+  MovingSquareSource src(10, 8);  // the error at frame 8 is never reached
+  Sequence seq;
+  std::string err;
+  REQUIRE(loadSequence(src, 5, size_t(1) << 30, &seq, &err));
+  REQUIRE(seq.frames.size() == 5);
+  const CachedFrame& f = seq.frames[2];
+  CHECK(f.bgr.cols == 160);
+  const cv::Vec3b px = f.bgr.at<cv::Vec3b>(40, 24);  // inside the target: RGB(20,20,200)
+  CHECK(int(px[0]) == 200);                          // B first
+  CHECK(int(f.rgb[40 * 160 + 24].b) == 200);
+}
+
+TEST_CASE("protocol: init at the first box, later frames scored, runs get consecutive seeds") {
+  MovingSquareSource src(11, -1);
+  const Sequence seq = load(src);
+  std::vector<uint64_t> seeds;
+  TrackerFactory factory = [&](const EntrySpec&, std::string*) {
+    // A 24 px box shifted by half its width: IoU exactly 1/3.
+    return std::unique_ptr<BenchTracker>(std::make_unique<ShiftTracker>(12.f, false, &seeds));
+  };
+  RunOptions options;
+  options.seed = 7;
+  Progress quiet(false);
+  const SequenceResult r = runEntry({"fake", "default", 3}, seq, factory, options, quiet);
+  REQUIRE(r.ran);
+  CHECK(r.figures.frames == 10);  // 11 frames, the first initialises
+  CHECK(r.figures.overlap == Approx(100.0 / 3.0));
+  CHECK(r.figures.hit == 0.0);  // exactly 1/3 is not a hit
+  CHECK(r.figures.pascal == 0.0);
+  CHECK(r.figures.centerPx == Approx(12.0));
+  CHECK(r.figures.stageMs[4] == Approx(1.0));
+  CHECK(seeds == std::vector<uint64_t>{7, 8, 9});
+  REQUIRE(r.frameIndex.size() == 10);
+  CHECK(r.frameIndex.front() == 1);
+  CHECK(r.meanOverlap.front() == Approx(1.0 / 3.0));
+}
+
+TEST_CASE("invisible targets count with overlap 0; no box at all means nothing to start from") {
+  MovingSquareSource hidden(5, -1, false);
+  const Sequence seq = load(hidden);
+  TrackerFactory factory = [](const EntrySpec&, std::string*) {
+    return std::unique_ptr<BenchTracker>(std::make_unique<ShiftTracker>(0.f));
+  };
+  Progress quiet(false);
+  const SequenceResult r = runEntry({"fake", "default", 1}, seq, factory, RunOptions{}, quiet);
+  CHECK_FALSE(r.ran);
+  CHECK(r.error == "no ground-truth box to initialise from");
+}
+
+TEST_CASE("a tracker that cannot run is reported with its reason, in every report") {
+  MovingSquareSource src(4, -1);
+  const Sequence seq = load(src);
+  TrackerFactory refuse = [](const EntrySpec&, std::string*) {
+    return std::unique_ptr<BenchTracker>(std::make_unique<ShiftTracker>(0.f, true));
+  };
+  TrackerFactory fine = [](const EntrySpec&, std::string*) {
+    return std::unique_ptr<BenchTracker>(std::make_unique<ShiftTracker>(0.f));
+  };
+  Progress quiet(false);
+  EntryResult a{"cuetrack", "2.1", 1, {}};
+  a.sequences.push_back(runEntry({"cuetrack", "2.1", 1}, seq, refuse, RunOptions{}, quiet));
+  EntryResult b{"opencv-kcf", "default", 1, {}};
+  b.sequences.push_back(runEntry({"opencv-kcf", "default", 1}, seq, fine, RunOptions{}, quiet));
+  REQUIRE_FALSE(a.sequences[0].ran);
+  CHECK(a.sequences[0].error == "cannot run: needs depth");
+  REQUIRE(b.sequences[0].ran);
+  CHECK(b.sequences[0].figures.overlap == Approx(100.0));
+
+  const std::string text = textReport({a, b});
+  CHECK(text.find("cuetrack 2.1 on square: cannot run: needs depth") != std::string::npos);
+  CHECK(text.find("Over.") != std::string::npos);
+  const std::string md = markdownReport({a, b}, PaperReference::Table3);
+  CHECK(md.find("- cuetrack 2.1 on square: cannot run: needs depth") != std::string::npos);
+  CHECK(md.find("paper 2.1 | 73.47 | 96.77") != std::string::npos);
+
+  // Unknown trackers and configurations are refused by the factories.
+  std::string err;
+  CHECK_FALSE(makePeerBench("opencv-nope", &err));
+  CHECK(err == "unknown tracker 'opencv-nope'");
+}
+
+TEST_CASE("output files: BoBoT result format, per-frame CSV, overlap plot") {
+  MovingSquareSource src(6, -1);
+  Sequence seq = load(src);
+  seq.gtHeader = "./square.avi";
+  TrackerFactory factory = [](const EntrySpec&, std::string*) {
+    return std::unique_ptr<BenchTracker>(std::make_unique<ShiftTracker>(0.f));
+  };
+  RunOptions options;
+  options.resultsDir = "bench_runner_out/results";
+  Progress quiet(false);
+  EntryResult e{"fake", "1.1", 2, {}};
+  e.sequences.push_back(runEntry({"fake", "1.1", 2}, seq, factory, options, quiet));
+  REQUIRE(e.sequences[0].ran);
+
+  const std::string bobot = readAll("bench_runner_out/results/square/fake-1.1.run2.txt");
+  std::istringstream lines(bobot);
+  std::string header, first, second;
+  std::getline(lines, header);
+  std::getline(lines, first);
+  std::getline(lines, second);
+  CHECK(header == "./square.avi");
+  CHECK(first == "0 0.125000 0.333333 0.150000 0.200000");   // 20/160 40/120 24/160 24/120
+  CHECK(second == "1 0.137500 0.333333 0.150000 0.200000");  // moved 2 px
+
+  std::string err;
+  REQUIRE(writeOverlapCsv("bench_runner_out/square.csv", {e}, 0, &err));
+  const std::string csv = readAll("bench_runner_out/square.csv");
+  CHECK(csv.rfind("frame,fake 1.1\n1,1.0000\n2,1.0000\n", 0) == 0);
+
+  REQUIRE(writeOverlapPlot("bench_runner_out/square.png", {e}, 0, &err));
+  const cv::Mat png = cv::imread("bench_runner_out/square.png");
+  CHECK(png.cols == 900);
+  CHECK(png.rows == 340);
+
+  CHECK_FALSE(writeOverlapPlot("/nonexistent-dir/p.png", {e}, 0, &err));
+  CHECK(err.find("/nonexistent-dir/p.png") == 0);
+}
+
+TEST_CASE("OpenCV KCF follows a clearly visible moving target on the same frames") {
+  MovingSquareSource src(30, -1);
+  const Sequence seq = load(src);
+  TrackerFactory factory = [](const EntrySpec& s, std::string* err) {
+    return makePeerBench(s.tracker, err);
+  };
+  Progress quiet(false);
+  const SequenceResult r =
+      runEntry({"opencv-kcf", "default", 1}, seq, factory, RunOptions{}, quiet);
+  REQUIRE(r.ran);
+  CHECK(r.figures.frames == 29);
+  CHECK(r.figures.overlap > 60.0);
+  CHECK(r.figures.hit > 90.0);
+}
