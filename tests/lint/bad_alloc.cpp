@@ -1,0 +1,10 @@
+// Deliberately allocating code: the symbol check (lint_symbols_control) must reject
+// the library built from this file. Never linked into anything.
+#include <cstdlib>
+
+int* lintBadNew() {
+  return new int(7);
+}
+void* lintBadMalloc(std::size_t n) {
+  return std::malloc(n);
+}
