@@ -1,0 +1,107 @@
+#include "App.hpp"
+
+#include <cstdio>
+
+#include "Options.hpp"
+#include "Pipeline.hpp"
+#include "SerialLink.hpp"
+#include "Sources.hpp"
+#include "cuetrack/platform/linux/FdTrackSink.hpp"
+#include "cuetrack/platform/linux/MonotonicClock.hpp"
+#include "cuetrack/platform/linux/SerialPort.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
+#include "cuetrack/platform/linux/StderrReporter.hpp"
+
+namespace cuetrack::app {
+
+int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
+  platform::StderrReporter reporter("cuetrack");
+  char err[512] = "";
+  AppOptions opt;
+  switch (parseOptions(argc, argv, &opt, err, sizeof err)) {
+    case ParseResult::Help:
+      std::fputs(usageText(), stdout);
+      return kExitOk;
+    case ParseResult::Error:
+      reporter.report(err);
+      return kExitUsage;
+    case ParseResult::Run:
+      break;
+  }
+  if (opt.serialPath && !platform::SerialPort::baudSupported(opt.baud)) {
+    std::snprintf(err, sizeof err, "--baud %d: unsupported (9600..921600, see --help)", opt.baud);
+    reporter.report(err);
+    return kExitUsage;
+  }
+  platform::installStopSignals();
+
+  static platform::MonotonicClock clock;
+  if (!tracker.configure(opt.preset, opt.seed, &clock)) {
+    std::snprintf(err, sizeof err, "--config %s: unknown preset (best, 1.1-1.4, 2.1-2.5)",
+                  opt.preset);
+    reporter.report(err);
+    return kExitUsage;
+  }
+
+  FrameSource* source = openSource(opt.source, opt.seed, err, sizeof err);
+  if (!source) {
+    reporter.report(err);
+    return kExitSource;
+  }
+
+  static platform::FdTrackSink fileSink;
+  static platform::FdTrackSink stdoutSink;
+  static platform::SerialPort port;
+  if (opt.outPath && !fileSink.openFile(opt.outPath, platform::TextFormat::Csv)) {
+    reporter.report(fileSink.error());
+    return kExitOutput;
+  }
+  if (opt.serialPath && !port.open(opt.serialPath, opt.baud)) {
+    reporter.report(port.error());
+    return kExitOutput;
+  }
+
+  static FrameSlot slot;  // ~1.5 MiB
+  PipelineOptions po;
+  po.maxFrames = opt.frames;
+  po.hasBox = opt.hasBox;
+  po.box = opt.box;
+  po.useGroundTruth = opt.useGroundTruth;
+  po.statusPeriodUs = opt.quiet ? 0 : 1000000;
+  Pipeline pipeline(*source, slot, tracker, clock, reporter, po);
+  if (opt.outPath) pipeline.addSink(&fileSink);
+  if (opt.forceStdout || (!opt.outPath && !opt.serialPath)) {
+    stdoutSink.attachStdout(platform::TextFormat::Line);
+    pipeline.addSink(&stdoutSink);
+  }
+  static SerialLink* link = nullptr;
+  if (opt.serialPath) {
+    static SerialLink serialLink(port, clock, reporter);
+    link = &serialLink;
+    pipeline.attachLink(link);
+  }
+
+  StepResult r = StepResult::Continue;
+  while (r == StepResult::Continue && !platform::stopRequested()) r = pipeline.step();
+
+  if (link) link->service();  // last ACK / track out of the queue
+  if (!opt.quiet) {
+    std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
+                  static_cast<unsigned>(pipeline.frames()),
+                  platform::stopRequested()  ? "signal"
+                  : r == StepResult::Stopped ? "STOP command"
+                  : r == StepResult::Done    ? "end of source or --frames"
+                                             : "error");
+    reporter.report(err);
+  }
+  switch (r) {
+    case StepResult::SourceError:
+      return kExitSource;
+    case StepResult::BoxRejected:
+      return kExitBoxRejected;
+    default:
+      return pipeline.outputFailed() ? kExitOutput : kExitOk;
+  }
+}
+
+}  // namespace cuetrack::app

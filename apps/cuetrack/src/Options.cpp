@@ -1,0 +1,138 @@
+#include "Options.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace cuetrack::app {
+namespace {
+
+bool parseLong(const char* s, long lo, long hi, long* out) {
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(s, &end, 10);
+  if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi) return false;
+  *out = v;
+  return true;
+}
+
+bool parseBox(const char* s, Box* out) {
+  float v[4];
+  for (int i = 0; i < 4; ++i) {
+    char* end = nullptr;
+    v[i] = std::strtof(s, &end);
+    if (end == s) return false;
+    s = end;
+    if (i < 3) {
+      if (*s != ',') return false;
+      ++s;
+    }
+  }
+  if (*s != '\0' || !(v[2] > 0.f) || !(v[3] > 0.f)) return false;
+  *out = Box{v[0], v[1], v[2], v[3]};
+  return true;
+}
+
+}  // namespace
+
+const char* usageText() {
+  return "usage: cuetrack [options]\n"
+         "Tracks an object in RGB-D frames and streams the track (docs/serial-protocol.md).\n"
+         "\n"
+         "source (default: the Kinect when one is plugged in, else the synthetic scene 'moving'):\n"
+         "  --source kinect|synth[:SCENE]|PATH   SCENE: moving twin-crossing occlusion untextured\n"
+         "                                       lighting approach box; PATH: a recording\n"
+         "target (default: the recording's ground truth in its first frame, else wait for START):\n"
+         "  --box X,Y,W,H      target box in the first frame [px]\n"
+         "  --no-gt            ignore ground truth: wait for --box or a serial START command\n"
+         "outputs (stdout gets one line per frame when neither --serial nor --out is given):\n"
+         "  --serial DEV       stream binary track messages, accept commands (8N1 raw)\n"
+         "  --baud N           9600 19200 38400 57600 115200 (default) 230400 460800 500000\n"
+         "                     576000 921600\n"
+         "  --out FILE         CSV, one row per frame ('-' = stdout)\n"
+         "  --stdout           one line per frame on stdout as well\n"
+         "run:\n"
+         "  --frames N         stop after N frames\n"
+         "  --config NAME      tracker preset: best (default), 1.1-1.4, 2.1-2.5\n"
+         "  --seed N           random seed (default 1)\n"
+         "  --quiet            no status line (fps, dropped frames, state) on stderr\n"
+         "  --help\n"
+         "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM, STOP command),\n"
+         "  1 bad command line, 2 source failed, 3 output failed (cannot open, or a write to\n"
+         "  --out/stdout failed; tracking went on), 4 --box refused by the tracker\n";
+}
+
+ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size_t errLen) {
+  *out = AppOptions{};
+  for (int i = 1; i < argc; ++i) {
+    const char* a = argv[i];
+    auto value = [&](const char** v) {
+      if (i + 1 >= argc) {
+        std::snprintf(err, errLen, "%s needs a value (see --help)", a);
+        return false;
+      }
+      *v = argv[++i];
+      return true;
+    };
+    const char* v = nullptr;
+    long n = 0;
+    if (std::strcmp(a, "--help") == 0 || std::strcmp(a, "-h") == 0) return ParseResult::Help;
+    if (std::strcmp(a, "--no-gt") == 0) {
+      out->useGroundTruth = false;
+    } else if (std::strcmp(a, "--stdout") == 0) {
+      out->forceStdout = true;
+    } else if (std::strcmp(a, "--quiet") == 0) {
+      out->quiet = true;
+    } else if (std::strcmp(a, "--source") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      out->source = v;
+    } else if (std::strcmp(a, "--box") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseBox(v, &out->box)) {
+        std::snprintf(err, errLen, "--box %s: expected X,Y,W,H with W,H > 0 [px]", v);
+        return ParseResult::Error;
+      }
+      out->hasBox = true;
+    } else if (std::strcmp(a, "--serial") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      out->serialPath = v;
+    } else if (std::strcmp(a, "--baud") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseLong(v, 1, 4000000, &n)) {
+        std::snprintf(err, errLen, "--baud %s: not a number", v);
+        return ParseResult::Error;
+      }
+      out->baud = static_cast<int>(n);
+    } else if (std::strcmp(a, "--out") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      out->outPath = v;
+    } else if (std::strcmp(a, "--frames") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseLong(v, 0, 2000000000L, &n)) {
+        std::snprintf(err, errLen, "--frames %s: expected a count >= 0", v);
+        return ParseResult::Error;
+      }
+      out->frames = static_cast<int>(n);
+    } else if (std::strcmp(a, "--config") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      out->preset = v;
+    } else if (std::strcmp(a, "--seed") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      char* end = nullptr;
+      errno = 0;
+      const unsigned long long s = std::strtoull(v, &end, 10);
+      if (end == v || *end != '\0' || errno != 0) {
+        std::snprintf(err, errLen, "--seed %s: expected a non-negative integer", v);
+        return ParseResult::Error;
+      }
+      out->seed = s;
+    } else {
+      std::snprintf(err, errLen, "unknown option '%s' (see --help)", a);
+      return ParseResult::Error;
+    }
+  }
+  return ParseResult::Run;
+}
+
+}  // namespace cuetrack::app

@@ -1,0 +1,41 @@
+// The command line of `cuetrack`, parsed into a plain struct (no allocation).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "cuetrack/core/Geometry.hpp"
+
+namespace cuetrack::app {
+
+// Exit codes, also listed by --help.
+enum ExitCode : int {
+  kExitOk = 0,           // source ended, --frames reached, SIGINT/SIGTERM, or STOP command
+  kExitUsage = 1,        // bad command line
+  kExitSource = 2,       // source could not be opened or failed while reading
+  kExitOutput = 3,       // --serial/--out could not be opened, or a file/stdout write failed
+  kExitBoxRejected = 4,  // --box refused by the tracker (outside the image, too small...)
+};
+
+struct AppOptions {
+  const char* source = nullptr;  // nullptr: Kinect when present, else the synthetic default
+  bool hasBox = false;
+  Box box{};
+  bool useGroundTruth = true;
+  const char* serialPath = nullptr;
+  int baud = 115200;
+  const char* outPath = nullptr;
+  bool forceStdout = false;
+  int frames = -1;
+  const char* preset = "best";
+  uint64_t seed = 1;
+  bool quiet = false;
+};
+
+enum class ParseResult : uint8_t { Run, Help, Error };
+
+ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size_t errLen);
+const char* usageText();
+inline constexpr const char* kDefaultScene = "moving";
+
+}  // namespace cuetrack::app

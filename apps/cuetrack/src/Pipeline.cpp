@@ -1,0 +1,193 @@
+#include "Pipeline.hpp"
+
+#include <cstdio>
+
+#include "cuetrack/platform/TrackText.hpp"
+
+namespace cuetrack::app {
+
+Pipeline::Pipeline(FrameSource& source, FrameSlot& slot, TrackerPort& tracker, const Clock& clock,
+                   platform::Reporter& reporter, const PipelineOptions& options)
+    : _source(source),
+      _slot(slot),
+      _tracker(tracker),
+      _clock(clock),
+      _reporter(reporter),
+      _options(options) {
+  _statusLastUs = _clock.nowUs();
+}
+
+bool Pipeline::addSink(platform::TrackSink* sink) {
+  if (_numSinks >= kMaxSinks) return false;
+  _sinks[_numSinks] = sink;
+  _sinkOk[_numSinks] = true;
+  ++_numSinks;
+  return true;
+}
+
+void Pipeline::requestStart(const Box& boxPx, uint16_t cmdId) {
+  // A second START before the next frame replaces the first; the first is still answered.
+  if (_startPending && _link) _link->sendError(CTP_CMD_START, _startId, CTP_E_BUSY);
+  _startPending = true;
+  _startBox = boxPx;
+  _startId = cmdId;
+}
+
+void Pipeline::requestReset() {
+  _tracker.reset();
+  _targetActive = false;
+  _startPending = false;
+  _autoTargetTried = true;  // a reset target stays reset: no silent re-init from ground truth
+  _state = CTP_STATE_IDLE;
+}
+
+void Pipeline::setRateHz(uint16_t hz) {
+  if (_link) _link->setRateHz(hz);
+}
+
+void Pipeline::serviceLink() {
+  if (!_link) return;
+  _link->service();
+  InboundEvent events[8];
+  for (;;) {
+    const size_t n = _link->receive(events, 8);
+    for (size_t i = 0; i < n; ++i) {
+      const Reply r = _commands.handle(events[i].error, events[i].frame, *this);
+      if (r.kind == Reply::Kind::Ack) _link->sendAck(r.cmdType, r.cmdId);
+      if (r.kind == Reply::Kind::Error) {
+        // The decoder already counted framing/CRC/version errors; count malformed commands here.
+        if (events[i].error == CTP_OK) _link->noteRejected();
+        _link->sendError(r.cmdType, r.cmdId, r.code);
+      }
+    }
+    if (n < 8) break;
+  }
+  if (_link->heartbeatDue()) _link->sendHeartbeat(_state, _frames);
+}
+
+StepResult Pipeline::step() {
+  serviceLink();
+  if (_stopRequested) {
+    if (_link) _link->service();  // push the ACK out before we go
+    return StepResult::Stopped;
+  }
+  if (_options.maxFrames >= 0 && static_cast<int64_t>(_frames) >= _options.maxFrames) {
+    return StepResult::Done;
+  }
+  const ReadStatus rs = _source.next(_slot);
+  if (rs == ReadStatus::End) return StepResult::Done;
+  if (rs == ReadStatus::Error) {
+    _reporter.report(_source.error());
+    return StepResult::SourceError;
+  }
+  const Frame frame = _slot.frame();
+  const uint64_t t0 = _clock.nowUs();
+
+  TrackResult result;
+  bool initialised = false;
+  Box initBox{};
+  if (_startPending) {
+    _startPending = false;
+    _autoTargetTried = true;
+    const char* why = "";
+    if (_tracker.init(frame, _startBox, &why) == 0) {
+      initialised = true;
+      initBox = _startBox;
+      if (_link) _link->sendAck(CTP_CMD_START, _startId);
+    } else {
+      char line[160];
+      std::snprintf(line, sizeof line, "serial START %g,%g,%g,%g refused: %s", _startBox.x,
+                    _startBox.y, _startBox.w, _startBox.h, why);
+      _reporter.report(line);
+      _tracker.reset();
+      _targetActive = false;
+      _state = CTP_STATE_IDLE;
+      if (_link) _link->sendError(CTP_CMD_START, _startId, CTP_E_REJECTED);
+    }
+  } else if (!_targetActive && !_autoTargetTried) {
+    _autoTargetTried = true;
+    Box box{};
+    const char* origin = nullptr;
+    if (_options.hasBox) {
+      box = _options.box;
+      origin = "--box";
+    } else if (_options.useGroundTruth && _slot.hasGroundTruth && !_slot.groundTruth.empty()) {
+      box = _slot.groundTruth;
+      origin = "ground truth";
+    }
+    if (origin) {
+      const char* why = "";
+      if (_tracker.init(frame, box, &why) != 0) {
+        char line[200];
+        std::snprintf(line, sizeof line, "%s %g,%g,%g,%g refused by the tracker: %s", origin, box.x,
+                      box.y, box.w, box.h, why);
+        _reporter.report(line);
+        if (_options.hasBox) return StepResult::BoxRejected;
+      } else {
+        initialised = true;
+        initBox = box;
+      }
+    }
+  }
+
+  if (initialised) {
+    // The init frame reports the box the tracker was given, with full confidence.
+    _targetActive = true;
+    result.state = TrackState::Tracking;
+    result.box = initBox;
+    result.confidence = 1.f;
+  } else if (_targetActive) {
+    result = _tracker.update(frame);
+  }
+  const uint64_t procUs = _clock.nowUs() - t0;
+  const ctp_track_t msg = platform::toTrackMessage(
+      result, frame.timeUs, static_cast<uint32_t>(procUs > 0xFFFFFFFFu ? 0xFFFFFFFFu : procUs),
+      _state);
+  _state = msg.state;
+  ++_frames;
+  emit(msg);
+  statusLine();
+  return StepResult::Continue;
+}
+
+void Pipeline::emit(const ctp_track_t& msg) {
+  for (int i = 0; i < _numSinks; ++i) {
+    if (!_sinkOk[i]) continue;
+    ctp_track_t m = msg;
+    m.seq = _sinkSeq[i]++;
+    if (!_sinks[i]->write(m)) {
+      char line[448];
+      std::snprintf(line, sizeof line, "%s; output stopped, tracking continues",
+                    _sinks[i]->error());
+      _reporter.report(line);
+      _sinkOk[i] = false;
+      _outputFailed = true;
+    }
+  }
+  if (_link) _link->sendTrack(msg);
+}
+
+void Pipeline::statusLine() {
+  if (_options.statusPeriodUs == 0) return;
+  const uint64_t now = _clock.nowUs();
+  const uint64_t dt = now - _statusLastUs;
+  if (dt < _options.statusPeriodUs) return;
+  const double fps =
+      static_cast<double>(_frames - _statusLastFrames) * 1e6 / static_cast<double>(dt);
+  char line[256];
+  int n = std::snprintf(line, sizeof line, "frame %u fps %.1f dropped %d state %s",
+                        static_cast<unsigned>(_frames), fps, _source.skippedFrames(),
+                        ctp_state_name(_state));
+  if (_link && n > 0 && static_cast<size_t>(n) < sizeof line) {
+    const LinkStats& s = _link->stats();
+    std::snprintf(line + n, sizeof line - static_cast<size_t>(n),
+                  " | serial %s sent %u tx-dropped %u rx-errors %u",
+                  _link->connected() ? "up" : "down", static_cast<unsigned>(s.sent),
+                  static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors));
+  }
+  _reporter.report(line);
+  _statusLastUs = now;
+  _statusLastFrames = _frames;
+}
+
+}  // namespace cuetrack::app

@@ -1,0 +1,91 @@
+// One frame at a time: source -> tracker -> sinks and serial link, with commands
+// from the link applied between frames. Owns no big buffer: the frame slot, the
+// tracker and the sources live in static storage in main().
+#pragma once
+
+#include <cstdint>
+
+#include "CommandHandler.hpp"
+#include "SerialLink.hpp"
+#include "TrackerPort.hpp"
+#include "cuetrack/drivers/FrameSource.hpp"
+#include "cuetrack/platform/Reporter.hpp"
+#include "cuetrack/platform/TrackSink.hpp"
+
+namespace cuetrack::app {
+
+struct PipelineOptions {
+  int maxFrames = -1;           // stop after this many frames (-1: until the source ends)
+  bool hasBox = false;          // --box: the target in the first frame
+  Box box{};                    // [px]
+  bool useGroundTruth = true;   // else wait for --box or a serial START
+  uint64_t statusPeriodUs = 0;  // status line period; 0 = no status line
+};
+
+enum class StepResult : uint8_t {
+  Continue,
+  Done,         // source ended or --frames reached
+  Stopped,      // STOP command
+  SourceError,  // reported
+  BoxRejected,  // --box refused by the tracker (reported)
+};
+
+class Pipeline final : public AppControl {
+ public:
+  static constexpr int kMaxSinks = 3;
+
+  Pipeline(FrameSource& source, FrameSlot& slot, TrackerPort& tracker, const Clock& clock,
+           platform::Reporter& reporter, const PipelineOptions& options);
+
+  bool addSink(platform::TrackSink* sink);
+  void attachLink(SerialLink* link) { _link = link; }
+
+  StepResult step();
+
+  // Serial-side work without a frame (also done by step()): commands, heartbeats.
+  void serviceLink();
+
+  // AppControl
+  void requestStart(const Box& boxPx, uint16_t cmdId) override;
+  void requestReset() override;
+  void requestStop() override { _stopRequested = true; }
+  void setRateHz(uint16_t hz) override;
+
+  uint32_t frames() const { return _frames; }
+  uint8_t state() const { return _state; }
+  bool outputFailed() const { return _outputFailed; }
+  const CommandHandler& commands() const { return _commands; }
+
+ private:
+  void emit(const ctp_track_t& msg);
+  void statusLine();
+
+  FrameSource& _source;
+  FrameSlot& _slot;
+  TrackerPort& _tracker;
+  const Clock& _clock;
+  platform::Reporter& _reporter;
+  PipelineOptions _options;
+  SerialLink* _link{nullptr};
+  CommandHandler _commands;
+
+  platform::TrackSink* _sinks[kMaxSinks]{};
+  bool _sinkOk[kMaxSinks]{};
+  uint32_t _sinkSeq[kMaxSinks]{};
+  int _numSinks{0};
+  bool _outputFailed{false};
+
+  bool _targetActive{false};
+  bool _autoTargetTried{false};  // --box / ground truth is used once, at the start
+  bool _startPending{false};
+  Box _startBox{};
+  uint16_t _startId{0};
+  bool _stopRequested{false};
+  uint8_t _state{CTP_STATE_IDLE};
+  uint32_t _frames{0};
+
+  uint64_t _statusLastUs{0};
+  uint32_t _statusLastFrames{0};
+};
+
+}  // namespace cuetrack::app

@@ -1,0 +1,78 @@
+#include "Sources.hpp"
+
+#include <cstdio>
+#include <cstring>
+
+#include "Options.hpp"
+#include "cuetrack/drivers/SyntheticSource.hpp"
+#if defined(CUETRACK_HAVE_KINECT)
+#include "cuetrack/drivers/KinectSource.hpp"
+#endif
+#if defined(CUETRACK_HAVE_OPEN_SOURCE)
+#include "cuetrack/drivers/OpenSource.hpp"
+#endif
+
+namespace cuetrack::app {
+namespace {
+
+FrameSource* openSynth(const char* scene, uint64_t seed, char* err, size_t errLen) {
+  SceneSpec spec;
+  if (!makeScene(scene, &spec)) {
+    int n = std::snprintf(err, errLen, "synth:%s: unknown scene (known:", scene);
+    for (int i = 0; i < sceneCount() && n > 0 && static_cast<size_t>(n) < errLen; ++i) {
+      n += std::snprintf(err + n, errLen - static_cast<size_t>(n), " %s", sceneName(i));
+    }
+    if (n > 0 && static_cast<size_t>(n) < errLen)
+      std::snprintf(err + n, errLen - static_cast<size_t>(n), ")");
+    return nullptr;
+  }
+  static SyntheticSource source(spec, seed);  // ~2.6 MiB, built once on first use
+  return &source;
+}
+
+#if defined(CUETRACK_HAVE_KINECT)
+KinectSource& kinect() {
+  static KinectSource source;  // ~4.6 MiB of frame buffers
+  return source;
+}
+
+FrameSource* openKinect(char* err, size_t errLen) {
+  KinectOptions options;
+  if (!kinect().open(options)) {
+    std::snprintf(err, errLen, "%s", kinect().error());
+    return nullptr;
+  }
+  return &kinect();
+}
+#endif
+
+}  // namespace
+
+FrameSource* openSource(const char* spec, uint64_t seed, char* err, size_t errLen) {
+  if (spec == nullptr) {
+#if defined(CUETRACK_HAVE_KINECT)
+    char why[160] = "";
+    if (countKinects(why, sizeof why) > 0) return openKinect(err, errLen);
+#endif
+    return openSynth(kDefaultScene, seed, err, errLen);
+  }
+  if (std::strcmp(spec, "kinect") == 0) {
+#if defined(CUETRACK_HAVE_KINECT)
+    return openKinect(err, errLen);
+#else
+    std::snprintf(err, errLen, "kinect: this build has no Kinect driver (libfreenect missing)");
+    return nullptr;
+#endif
+  }
+  if (std::strcmp(spec, "synth") == 0) return openSynth(kDefaultScene, seed, err, errLen);
+  if (std::strncmp(spec, "synth:", 6) == 0) return openSynth(spec + 6, seed, err, errLen);
+#if defined(CUETRACK_HAVE_OPEN_SOURCE)
+  return openRecordedSource(spec, err, errLen);
+#else
+  std::snprintf(err, errLen,
+                "%s: recordings are not supported by this build (no recorded-frames reader)", spec);
+  return nullptr;
+#endif
+}
+
+}  // namespace cuetrack::app

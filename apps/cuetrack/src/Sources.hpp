@@ -1,0 +1,16 @@
+// Opens the frame source named on the command line. Every source lives in static
+// storage inside Sources.cpp (they are MiBs); at most one is opened per process.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "cuetrack/drivers/FrameSource.hpp"
+
+namespace cuetrack::app {
+
+// spec: nullptr (Kinect when present, else synth:<default scene>), "kinect",
+// "synth" / "synth:SCENE", or a recording path. nullptr + one line in err on failure.
+FrameSource* openSource(const char* spec, uint64_t seed, char* err, size_t errLen);
+
+}  // namespace cuetrack::app
