@@ -6,6 +6,7 @@ namespace {
 constexpr float kMinBoxPx = 8.f;        // smallest window side [px]
 constexpr float kNegativeRange = 1.5f;  // negatives within +-1.5 window sizes
 constexpr float kNegativeMaxOverlap = 0.3f;
+constexpr float kNearMaxOverlap = 0.5f;
 constexpr float kRoiMargin = 1.6f;  // ROI: particle boxes + this x mean size per side
 constexpr float kLostSpread = 3.f;  // motion noise gain while lost
 constexpr float kDefaultDtS = 1.f / 30.f;
@@ -139,15 +140,18 @@ void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
   const float rx0 = static_cast<float>(roi.x0), ry0 = static_cast<float>(roi.y0);
   const float rx1 = static_cast<float>(roi.x1), ry1 = static_cast<float>(roi.y1);
   for (int k = 0; k < count; ++k) {
+    // Every other negative is a near miss (shifted and/or rescaled, overlap < 0.5) so
+    // the classifier learns to localise; the rest are background within the range.
+    const bool near = (k & 1) == 0;
+    const float maxOverlap = near ? kNearMaxOverlap : kNegativeMaxOverlap;
     Box b = around;
     for (int attempt = 0; attempt < 12; ++attempt) {
-      const float cx =
-          around.x + 0.5f * around.w + _rng.uniform(-kNegativeRange, kNegativeRange) * around.w;
-      const float cy =
-          around.y + 0.5f * around.h + _rng.uniform(-kNegativeRange, kNegativeRange) * around.h;
+      const float range = near ? 0.6f : kNegativeRange;
+      const float cx = around.x + 0.5f * around.w + _rng.uniform(-range, range) * around.w;
+      const float cy = around.y + 0.5f * around.h + _rng.uniform(-range, range) * around.h;
       float w = around.w, h = around.h;
       bool sized = false;
-      if (_is3d) {
+      if (_is3d && !near) {
         // The size the target would have at the depth found there (paper 2.1).
         const Box probe{cx - 2.f, cy - 2.f, 4.f, 4.f};
         const float d = _channels.meanDepthMm(clipBox(probe, _imageW, _imageH));
@@ -159,7 +163,7 @@ void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
         }
       }
       if (!sized) {
-        const float s = fmath::fastExp(0.15f * _rng.gaussian());
+        const float s = fmath::fastExp((near ? 0.4f : 0.15f) * _rng.gaussian());
         w *= s;
         h *= s;
       }
@@ -169,7 +173,7 @@ void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
       if (h < kMinBoxPx) h = kMinBoxPx;
       b = Box{fmath::clampf(cx - 0.5f * w, rx0, rx1 - w),
               fmath::clampf(cy - 0.5f * h, ry0, ry1 - h), w, h};
-      if (overlap(b, around) < kNegativeMaxOverlap) break;
+      if (overlap(b, around) < maxOverlap) break;
     }
     addExample(b, false);
   }
