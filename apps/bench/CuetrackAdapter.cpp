@@ -2,6 +2,7 @@
 
 #include "TrackerAdapters.hpp"
 #include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/platform/linux/MonotonicClock.hpp"
 
 namespace cuetrack::bench {
 namespace {
@@ -42,7 +43,7 @@ class CuetrackBench final : public BenchTracker {
 
  private:
   Preset _preset;
-  SteadyClock _clock;
+  platform::MonotonicClock _clock;
 };
 
 }  // namespace

@@ -2,10 +2,11 @@
 
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
+
+#include "cuetrack/platform/linux/MonotonicClock.hpp"
 
 namespace cuetrack::bench {
 
@@ -16,12 +17,6 @@ Frame CachedFrame::frame() const {
   f.timeUs = timeUs;
   f.intrinsics = intrinsics;
   return f;
-}
-
-uint64_t SteadyClock::nowUs() const {
-  return static_cast<uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
-                                   std::chrono::steady_clock::now().time_since_epoch())
-                                   .count());
 }
 
 bool loadSequence(FrameSource& source, int maxFrames, size_t maxBytes, Sequence* seq,
@@ -75,7 +70,8 @@ bool loadSequence(FrameSource& source, int maxFrames, size_t maxBytes, Sequence*
 namespace {
 
 double nowS() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  static const platform::MonotonicClock clock;
+  return static_cast<double>(clock.nowUs()) * 1e-6;
 }
 
 }  // namespace
@@ -164,7 +160,7 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
   std::vector<IndexedBox> boxes;
   boxes.reserve(seq.frames.size());
   frameTimesUs.reserve(static_cast<size_t>(tracked) * static_cast<size_t>(spec.runs));
-  SteadyClock clock;
+  const platform::MonotonicClock clock;
 
   for (int run = 0; run < spec.runs; ++run) {
     if (!tracker->init(first, first.groundTruth, options.seed + static_cast<uint64_t>(run), &err)) {

@@ -16,7 +16,6 @@
 
 #include "Outputs.hpp"
 #include "Results.hpp"
-#include "cuetrack/core/Clock.hpp"
 #include "cuetrack/core/Frame.hpp"
 #include "cuetrack/drivers/FrameSource.hpp"
 
@@ -98,12 +97,6 @@ struct RunOptions {
   // Heap allocations of the process so far (the bench links a counting allocator);
   // nullptr: allocations are not counted and reported as 0.
   uint64_t (*allocationCount)() = nullptr;
-};
-
-// Monotonic clock for the timings (and cuetrack's per-stage times).
-class SteadyClock final : public Clock {
- public:
-  uint64_t nowUs() const override;
 };
 
 // Runs one entry on one sequence; never throws; a tracker that cannot run gives

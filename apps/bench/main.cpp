@@ -1,0 +1,139 @@
+// cuetrack-bench: the paper's evaluation protocol over recorded sequences, for
+// cuetrack's configurations and OpenCV's trackers on the very same decoded frames.
+// Exit code: 0 all sequences ran, 1 a sequence or an output file failed, 2 bad usage.
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "AllocCounter.hpp"
+#include "Json.hpp"
+#include "Options.hpp"
+#include "Outputs.hpp"
+#include "Report.hpp"
+#include "Runner.hpp"
+#include "Sources.hpp"
+#include "TrackerAdapters.hpp"
+
+using namespace cuetrack;
+using namespace cuetrack::bench;
+
+namespace {
+
+std::unique_ptr<BenchTracker> makeTracker(const EntrySpec& spec, std::string* err) {
+  if (spec.tracker == "cuetrack") return makeCuetrackBench(spec.config, err);
+  return makePeerBench(spec.tracker, err);
+}
+
+bool writeText(const std::string& path, const std::string& text, std::string* err) {
+  FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) {
+    *err = path + ": cannot write";
+    return false;
+  }
+  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !ok) {
+    *err = path + ": write failed";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  bool help = false;
+  std::string err;
+  if (!parseOptions(argc, argv, &options, &help, &err)) {
+    std::fprintf(stderr, "cuetrack-bench: %s\n%s", err.c_str(), usage());
+    return 2;
+  }
+  if (help) {
+    std::fputs(usage(), stdout);
+    return 0;
+  }
+
+  std::vector<EntryResult> results;
+  for (const EntrySpec& e : options.entries) results.push_back({e.tracker, e.config, e.runs, {}});
+
+  const TrackerFactory factory = makeTracker;
+  RunOptions runOptions;
+  runOptions.seed = options.seed;
+  runOptions.resultsDir = options.resultsDir;
+  runOptions.allocationCount = &cuetrack::test::allocationCount;
+  Progress progress(!options.quiet);
+  int failures = 0;
+
+  for (size_t si = 0; si < options.sequences.size(); ++si) {
+    const SequenceArg& arg = options.sequences[si];
+    Sequence seq;
+    std::unique_ptr<FrameSource> source = openSequence(arg, options, &err);
+    bool ok = source != nullptr;
+    if (ok) {
+      ok = loadSequence(*source, options.maxFrames, options.maxMemMiB << 20, &seq, &err);
+      if (!ok) seq.name = source->name();
+    }
+    source.reset();  // decoded: the reader's buffers are no longer needed
+    if (!ok) {
+      std::fprintf(stderr, "cuetrack-bench: %s (skipped)\n", err.c_str());
+      ++failures;
+      for (EntryResult& r : results) {
+        SequenceResult s;
+        s.name = seq.name.empty() ? arg.spec : seq.name;
+        s.error = "sequence failed: " + err;
+        r.sequences.push_back(s);
+      }
+      continue;
+    }
+    if (seq.skippedFrames > 0)
+      std::fprintf(stderr, "cuetrack-bench: %s: %d unreadable frames skipped\n", seq.name.c_str(),
+                   seq.skippedFrames);
+    seq.gtHeader = bobotHeader(arg);
+
+    long planned = 0;
+    for (const EntrySpec& e : options.entries)
+      planned += static_cast<long>(e.runs) * static_cast<long>(seq.frames.size() - 1);
+    progress.beginSequence(seq.name, static_cast<int>(si),
+                           static_cast<int>(options.sequences.size()), planned);
+    for (size_t ei = 0; ei < options.entries.size(); ++ei) {
+      SequenceResult r = runEntry(options.entries[ei], seq, factory, runOptions, progress);
+      if (!r.ran)
+        std::fprintf(stderr, "cuetrack-bench: %s on %s: %s\n", results[ei].label().c_str(),
+                     seq.name.c_str(), r.error.c_str());
+      results[ei].sequences.push_back(std::move(r));
+    }
+
+    const size_t index = results.front().sequences.size() - 1;
+    if (!options.csvDir.empty()) {
+      if (!makeDirs(options.csvDir, &err) ||
+          !writeOverlapCsv(options.csvDir + "/" + seq.name + ".overlap.csv", results, index,
+                           &err)) {
+        std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
+        ++failures;
+      }
+    }
+    if (!options.plotDir.empty()) {
+      if (!makeDirs(options.plotDir, &err) ||
+          !writeOverlapPlot(options.plotDir + "/" + seq.name + ".overlap.png", results, index,
+                            &err)) {
+        std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
+        ++failures;
+      }
+    }
+  }
+
+  std::fputs(textReport(results).c_str(), stdout);
+  if (!options.jsonPath.empty() && !writeJson(options.jsonPath.c_str(), results, &err)) {
+    std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
+    ++failures;
+  }
+  if (!options.markdownPath.empty() &&
+      !writeText(options.markdownPath, markdownReport(results, options.paper), &err)) {
+    std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
+    ++failures;
+  }
+  if (failures > 0)
+    std::fprintf(stderr, "cuetrack-bench: %d failure(s); see the messages above\n", failures);
+  return failures > 0 ? 1 : 0;
+}
