@@ -1,0 +1,197 @@
+// cuetrack-listen PORT [--baud N] [--csv FILE] [--send COMMAND]...
+// Host tool: decodes the track stream of `cuetrack --serial`, prints or saves it,
+// sends commands. Runs until interrupted or until the port closes.
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "Listener.hpp"
+#include "cuetrack/platform/CommandText.hpp"
+#include "cuetrack/platform/linux/FdTrackSink.hpp"
+#include "cuetrack/platform/linux/MonotonicClock.hpp"
+#include "cuetrack/platform/linux/SerialPort.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
+#include "cuetrack/platform/linux/StderrReporter.hpp"
+
+namespace {
+
+using namespace cuetrack;
+
+constexpr int kMaxSends = 32;
+
+const char* kUsage =
+    "usage: cuetrack-listen PORT [--baud N] [--csv FILE] [--send COMMAND]... [--tracks N]\n"
+    "                       [--idle-timeout SECONDS]\n"
+    "Decodes cuetrack's serial stream (docs/serial-protocol.md): one line per track on\n"
+    "stdout, or with --csv a CSV file (header + one row per track; '-' = stdout). Other\n"
+    "messages (ack, error, heartbeat) go to stdout, or to stderr with --csv.\n"
+    "  --baud N             9600..921600 (default 115200)\n"
+    "  --send COMMAND       sent in order after opening: start:X,Y,W,H  reset  stop  rate:HZ\n"
+    "  --tracks N           exit after N track messages\n"
+    "  --idle-timeout S     exit with code 4 when nothing arrives for S seconds\n"
+    "exit codes: 0 interrupted, port closed or --tracks reached; 1 bad command line;\n"
+    "  2 port cannot be opened or a command cannot be sent; 3 CSV write failed; 4 idle timeout\n";
+
+// Message lines: plain text to a file descriptor (stdout or stderr), no prefix.
+class FdLines final : public platform::Reporter {
+ public:
+  explicit FdLines(int fd) : _fd(fd) {}
+  void report(const char* line) override {
+    char buf[320];
+    const int n = std::snprintf(buf, sizeof buf, "%s\n", line);
+    if (n > 0) {
+      ssize_t ignored = ::write(
+          _fd, buf, static_cast<size_t>(n) < sizeof buf ? static_cast<size_t>(n) : sizeof buf - 1);
+      (void)ignored;
+    }
+  }
+
+ private:
+  int _fd;
+};
+
+bool parseInt(const char* s, long lo, long hi, long* out) {
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(s, &end, 10);
+  if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi) return false;
+  *out = v;
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  platform::StderrReporter problems("cuetrack-listen");
+  const char* portPath = nullptr;
+  const char* csvPath = nullptr;
+  long baud = 115200, maxTracks = -1, idleS = -1;
+  const char* sends[kMaxSends];
+  int numSends = 0;
+  char err[768];
+  for (int i = 1; i < argc; ++i) {
+    const char* a = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (std::strcmp(a, "--help") == 0 || std::strcmp(a, "-h") == 0) {
+      std::fputs(kUsage, stdout);
+      return 0;
+    } else if (std::strcmp(a, "--baud") == 0 && hasValue) {
+      if (!parseInt(argv[++i], 1, 4000000, &baud) ||
+          !platform::SerialPort::baudSupported(static_cast<int>(baud))) {
+        std::snprintf(err, sizeof err, "--baud %s: unsupported (9600..921600)", argv[i]);
+        problems.report(err);
+        return 1;
+      }
+    } else if (std::strcmp(a, "--csv") == 0 && hasValue) {
+      csvPath = argv[++i];
+    } else if (std::strcmp(a, "--send") == 0 && hasValue) {
+      if (numSends >= kMaxSends) {
+        problems.report("too many --send (at most 32)");
+        return 1;
+      }
+      sends[numSends++] = argv[++i];
+    } else if (std::strcmp(a, "--tracks") == 0 && hasValue) {
+      if (!parseInt(argv[++i], 0, 2000000000L, &maxTracks)) {
+        std::snprintf(err, sizeof err, "--tracks %s: expected a count", argv[i]);
+        problems.report(err);
+        return 1;
+      }
+    } else if (std::strcmp(a, "--idle-timeout") == 0 && hasValue) {
+      if (!parseInt(argv[++i], 1, 86400, &idleS)) {
+        std::snprintf(err, sizeof err, "--idle-timeout %s: expected seconds >= 1", argv[i]);
+        problems.report(err);
+        return 1;
+      }
+    } else if (a[0] == '-' && a[1] != '\0') {
+      std::snprintf(err, sizeof err, "unknown option or missing value: '%s' (see --help)", a);
+      problems.report(err);
+      return 1;
+    } else if (!portPath) {
+      portPath = a;
+    } else {
+      std::snprintf(err, sizeof err, "unexpected argument '%s' (one PORT only)", a);
+      problems.report(err);
+      return 1;
+    }
+  }
+  if (!portPath) {
+    problems.report("missing PORT (see --help)");
+    return 1;
+  }
+  // Validate every command before touching the port.
+  ctp_command_t commands[kMaxSends];
+  for (int i = 0; i < numSends; ++i) {
+    if (!platform::parseCommandText(sends[i], static_cast<uint16_t>(i + 1), &commands[i], err,
+                                    sizeof err)) {
+      problems.report(err);
+      return 1;
+    }
+  }
+
+  platform::installStopSignals();
+  static platform::SerialPort port;
+  if (!port.open(portPath, static_cast<int>(baud))) {
+    problems.report(port.error());
+    return 2;
+  }
+  static platform::FdTrackSink tracks;
+  if (csvPath) {
+    if (!tracks.openFile(csvPath, platform::TextFormat::Csv)) {
+      problems.report(tracks.error());
+      return 3;
+    }
+  } else {
+    tracks.attachStdout(platform::TextFormat::Line);
+  }
+  FdLines messages(csvPath ? 2 : 1);  // with --csv, stdout may carry the CSV itself
+  listen::Listener listener(port, tracks, messages, problems);
+
+  for (int i = 0; i < numSends; ++i) {
+    if (!listener.send(commands[i])) {
+      std::snprintf(err, sizeof err, "%s: cannot send '%s': %s", portPath, sends[i], port.error());
+      problems.report(err);
+      return 2;
+    }
+  }
+
+  platform::MonotonicClock clock;
+  uint64_t lastRxUs = clock.nowUs();
+  int code = 0;
+  const char* why = "interrupted";
+  while (!platform::stopRequested()) {
+    bool received = false;
+    const listen::PollResult r = listener.poll(100, &received);
+    if (r == listen::PollResult::Closed) {
+      why = "port closed";
+      break;
+    }
+    if (r == listen::PollResult::OutputFailed) {
+      why = "CSV write failed";
+      code = 3;
+      break;
+    }
+    if (received) lastRxUs = clock.nowUs();
+    if (maxTracks >= 0 && listener.stats().tracks >= static_cast<uint32_t>(maxTracks)) {
+      why = "--tracks reached";
+      break;
+    }
+    if (idleS > 0 && clock.nowUs() - lastRxUs > static_cast<uint64_t>(idleS) * 1000000u) {
+      why = "idle timeout";
+      code = 4;
+      break;
+    }
+  }
+  const listen::ListenStats& s = listener.stats();
+  const ctp_stats_t& d = listener.decoderStats();
+  std::snprintf(
+      err, sizeof err,
+      "%s: %u tracks, %u heartbeats, %u acks, %u errors; rejected %u (crc %u, framing %u, "
+      "overlong %u, version %u); seq gaps %u",
+      why, s.tracks, s.heartbeats, s.acks, s.errors, s.rejected, d.crc, d.framing, d.overlong,
+      d.version, s.seqGaps);
+  problems.report(err);
+  return code;
+}
