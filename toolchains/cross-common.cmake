@@ -26,18 +26,19 @@ if(CUETRACK_BOARD)
   include(${CMAKE_CURRENT_LIST_DIR}/boards/${CUETRACK_BOARD}.cmake)
 endif()
 
-# binfmt_misc is not assumed: call qemu explicitly. The multiarch libc and the
-# cross loader differ, so the loader must be pointed at the multiarch libraries
-# (without it, programs linked against them spin forever at start-up).
-string(REGEX REPLACE "-.*" "" _qarch ${CUETRACK_TRIPLE})
-if(_qarch STREQUAL "aarch64")
+# binfmt_misc is not assumed: call qemu explicitly, through qemu-run.sh, which points the
+# loader at the cross libc first (the multiarch libc and the cross loader differ: without
+# it, programs linked against multiarch libraries spin forever at start-up) and keeps a
+# test's own LD_LIBRARY_PATH (fakenect) in front.
+if(CUETRACK_TRIPLE MATCHES "^aarch64")
   set(_qemu qemu-aarch64)
 else()
   set(_qemu qemu-arm)
 endif()
 find_program(CUETRACK_QEMU NAMES ${_qemu} ${_qemu}-static)
 if(CUETRACK_QEMU)
-  set(CMAKE_CROSSCOMPILING_EMULATOR
-      ${CUETRACK_QEMU} -L /usr/${CUETRACK_TRIPLE}
-      -E LD_LIBRARY_PATH=/usr/${CUETRACK_TRIPLE}/lib:/usr/lib/${CUETRACK_TRIPLE})
+  set(CMAKE_CROSSCOMPILING_EMULATOR ${CMAKE_CURRENT_LIST_DIR}/qemu-run.sh ${CUETRACK_QEMU}
+      ${CUETRACK_TRIPLE})
+else()
+  message(WARNING "${_qemu} not found: ARM tests cannot run (install qemu-user: scripts/setup.sh)")
 endif()
