@@ -1,0 +1,112 @@
+// cuetrack-bench as a user runs it: bad command lines, missing and broken sequences
+// (clear error, the next sequence still runs, non-zero exit), trackers that cannot run.
+#include <sys/wait.h>
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "MiniJson.hpp"
+
+namespace {
+
+struct Run {
+  int exitCode = -1;
+  std::string out;  // stdout and stderr together
+};
+
+Run runBench(const std::string& args) {
+  Run r;
+  const std::string cmd = std::string(CUETRACK_BENCH_EXE) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  REQUIRE(p);
+  char buf[4096];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string readAll(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+TEST_CASE("a bad command line exits 2 with one clear line and the usage") {
+  Run r = runBench("--runs zero synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("cuetrack-bench: --runs: 'zero' is not a positive whole number") !=
+        std::string::npos);
+  r = runBench("--tracker opencv-goturn synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("unknown tracker 'opencv-goturn'") != std::string::npos);
+  r = runBench("--config 3.1 synth:moving");
+  CHECK(r.exitCode == 2);
+  r = runBench("");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("no sequence given") != std::string::npos);
+}
+
+#if CUETRACK_BENCH_TEST_SYNTH
+TEST_CASE("a missing sequence is reported, the next one runs, the exit code says so") {
+  const std::string json = "bench_cli_missing.json";
+  const Run r = runBench(
+      "/nonexistent/Vid_X.avi synth:moving --frames 8 --runs 1 --quiet "
+      "--tracker cuetrack,opencv-mosse --config best --json " +
+      json);
+  CHECK(r.exitCode == 1);
+  CHECK(r.out.find("/nonexistent/Vid_X.avi") != std::string::npos);
+  CHECK(r.out.find("(skipped)") != std::string::npos);
+  minijson::Value v;
+  REQUIRE(minijson::parse(readAll(json), &v));
+  REQUIRE(v.kind == minijson::Value::Array);
+  REQUIRE(v.items.size() == 2);
+  const minijson::Value& cue = v.items[0];
+  CHECK(cue.get("tracker")->s == "cuetrack");
+  const auto& seqs = cue.get("sequences")->items;
+  REQUIRE(seqs.size() == 2);
+  CHECK(seqs[0].get("overlap")->kind == minijson::Value::Null);
+  CHECK(seqs[1].get("name")->s == "moving");
+  CHECK(seqs[1].get("frames")->n == 7);  // 8 frames, the first initialises
+  REQUIRE(seqs[1].get("overlap")->kind == minijson::Value::Number);
+  CHECK(seqs[1].get("overlap")->n > 30.0);
+  CHECK(seqs[1].get("allocs")->n == 0.0);  // the core does not allocate while tracking
+}
+#endif
+
+#if CUETRACK_BENCH_TEST_READERS
+TEST_CASE("a broken video gets one line naming it") {
+  {
+    std::ofstream f("bench_cli_broken.avi");
+    f << "not a video at all";
+  }
+  {
+    std::ofstream f("bench_cli_broken.gt.txt");
+    f << "./bench_cli_broken.avi\r\n0 0.1 0.1 0.2 0.2\r\n";
+  }
+  const Run r = runBench("bench_cli_broken.avi --runs 1 --quiet --tracker opencv-mosse");
+  CHECK(r.exitCode == 1);
+  CHECK(r.out.find("bench_cli_broken") != std::string::npos);
+}
+
+TEST_CASE("RGB-D configurations on RGB-only BoBoT video are reported as unable to run") {
+  const char* env = std::getenv("CUETRACK_SHARED_DIR");
+  const std::string video =
+      std::string(env ? env : CUETRACK_SHARED_DIR) + "/data/bobot/Vid_C_juice.avi";
+  if (!std::ifstream(video)) {
+    WARN("skipped: " << video << " not found (set CUETRACK_SHARED_DIR)");
+    return;
+  }
+  const Run r = runBench(video + " --frames 6 --runs 1 --quiet --config 2.1,1.1");
+  CHECK(r.exitCode == 0);
+  CHECK(r.out.find("cuetrack 2.1 on Vid_C_juice: cannot run") != std::string::npos);
+}
+#endif
