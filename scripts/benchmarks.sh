@@ -8,7 +8,7 @@
 #     and every OpenCV peer on the same frames.
 # Environment: CUETRACK_SHARED_DIR (default ../shared), BUILD (build tree, default
 # build/benchmarks), RUNS (BoBoT runs, 10), SYN_RUNS (synthetic runs, 5),
-# PEER_RUNS (OpenCV peer runs, 3), FRAMES (cut every sequence, default whole),
+# PEER_RUNS (OpenCV peer runs, 1: TLD, CSRT and MIL take 100-200 ms a frame), FRAMES (cut every sequence, default whole),
 # DRY=1 (print the block instead of writing docs/benchmarks.md).
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -18,7 +18,7 @@ BOBOT="$SHARED/data/bobot"
 BUILD=${BUILD:-build/benchmarks}
 RUNS=${RUNS:-10}
 SYN_RUNS=${SYN_RUNS:-5}
-PEER_RUNS=${PEER_RUNS:-3}
+PEER_RUNS=${PEER_RUNS:-1}
 FRAMES=${FRAMES:-}
 SCENES=(twin-crossing occlusion untextured lighting approach)
 DOC=docs/benchmarks.md

@@ -36,6 +36,11 @@ const EntryResult* findTracker(const std::vector<EntryResult>& entries, const ch
   return nullptr;
 }
 
+// What a table cell says for a sequence the entry did not run on.
+const char* notRunCell(const SequenceResult& s) {
+  return s.error.rfind("sequence failed", 0) == 0 ? "failed" : "cannot run";
+}
+
 std::string fit(const std::string& s, size_t width) {
   return s.size() <= width ? s : s.substr(0, width - 1) + "~";
 }
@@ -54,7 +59,7 @@ void textAccuracyTable(std::string& out, const std::vector<EntryResult>& entries
     appendf(out, "%-22s", fit(e.label(), 22).c_str());
     for (const SequenceResult& s : e.sequences) {
       if (!s.ran) {
-        appendf(out, " %15s", "cannot run");
+        appendf(out, " %15s", notRunCell(s));
         continue;
       }
       const Figures& f = s.figures;
@@ -143,7 +148,7 @@ std::string markdownReport(const std::vector<EntryResult>& entries, PaperReferen
     appendf(out, "| %s | ", e.label().c_str());
     for (const SequenceResult& s : e.sequences) {
       if (!s.ran)
-        out += "cannot run | cannot run | ";
+        appendf(out, "%s | %s | ", notRunCell(s), notRunCell(s));
       else
         appendf(out, "%s | %s | ", num(s.figures.overlap, 2).c_str(),
                 num(s.figures.hit, 2).c_str());
@@ -192,7 +197,7 @@ std::string markdownReport(const std::vector<EntryResult>& entries, PaperReferen
     appendf(out, "| %s | ", e.label().c_str());
     for (const SequenceResult& s : e.sequences) {
       if (!s.ran)
-        out += "cannot run | cannot run | ";
+        appendf(out, "%s | %s | ", notRunCell(s), notRunCell(s));
       else
         appendf(out, "%s | %s | ", num(s.figures.pascal, 2).c_str(),
                 num(s.figures.centerPx, 2).c_str());

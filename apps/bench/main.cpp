@@ -20,6 +20,17 @@ using namespace cuetrack::bench;
 
 namespace {
 
+// "dir/Vid_C_juice.avi" -> "Vid_C_juice", "seq/" -> "seq": the name a reader would give.
+std::string nameOf(const std::string& spec) {
+  std::string s = spec;
+  while (s.size() > 1 && s.back() == '/') s.pop_back();
+  const size_t slash = s.find_last_of('/');
+  if (slash != std::string::npos) s = s.substr(slash + 1);
+  const size_t dot = s.find_last_of('.');
+  if (dot != std::string::npos && dot > 0) s = s.substr(0, dot);
+  return s;
+}
+
 std::unique_ptr<BenchTracker> makeTracker(const EntrySpec& spec, std::string* err) {
   if (spec.tracker == "cuetrack") return makeCuetrackBench(spec.config, err);
   return makePeerBench(spec.tracker, err);
@@ -80,7 +91,7 @@ int main(int argc, char** argv) {
       ++failures;
       for (EntryResult& r : results) {
         SequenceResult s;
-        s.name = seq.name.empty() ? arg.spec : seq.name;
+        s.name = seq.name.empty() ? nameOf(arg.spec) : seq.name;
         s.error = "sequence failed: " + err;
         r.sequences.push_back(s);
       }
