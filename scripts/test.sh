@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The one test command: installs what is missing, then builds and passes every
-# test: host, host under ASan+UBSan, aarch64 and armhf under qemu-user, the fuzz
-# targets for a bounded time, and the lint checks. Exits non-zero on any failure.
+# test: host (with the lint checks), host under ASan+UBSan, aarch64 and armhf under
+# qemu-user, and the fuzz targets for a bounded time. Exits non-zero on any failure
+# and ends with each preset's ctest summary and time. Logs: build/logs/<preset>.log.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -9,16 +10,28 @@ bash scripts/setup.sh
 export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-$(nproc)}
 export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)}
 FUZZ_SECONDS=${CUETRACK_FUZZ_SECONDS:-20}
+PRESETS=${CUETRACK_PRESETS:-host host-asan aarch64 armhf}
 start=$(date +%s)
 stamp() { echo "== [$(( $(date +%s) - start ))s] $*"; }
+mkdir -p build/logs
+recap=()
 
-for preset in host host-asan aarch64 armhf; do
+for preset in $PRESETS; do
   stamp "workflow $preset"
-  cmake --workflow --preset "$preset"
+  t0=$(date +%s)
+  log=build/logs/$preset.log
+  if ! cmake --workflow --preset "$preset" 2>&1 | tee "$log"; then
+    echo "FAILED: workflow $preset (log: $log)" >&2
+    grep -E '^[[:space:]]+[0-9]+ - ' "$log" >&2 || true  # ctest's list of failed tests
+    exit 1
+  fi
+  summary=$(grep -E 'tests passed, [0-9]+ tests failed' "$log" | tail -n 1)
+  recap+=("$(printf '%-10s %5ss  %s' "$preset" $(( $(date +%s) - t0 )) "${summary:-no ctest summary}")")
 done
 
 stamp "fuzz targets (${FUZZ_SECONDS}s each)"
-cmake --workflow --preset fuzz
+t0=$(date +%s)
+cmake --workflow --preset fuzz > build/logs/fuzz.log 2>&1 || { cat build/logs/fuzz.log >&2; exit 1; }
 shopt -s nullglob
 fuzzers=(build/fuzz/bin/fuzz_*)
 if [ ${#fuzzers[@]} -eq 0 ]; then echo "no fuzz targets built" >&2; exit 1; fi
@@ -32,5 +45,9 @@ for f in "${fuzzers[@]}"; do
     | grep -E 'stat::number_of_executed_units|ERROR|SUMMARY|Done' || true
   test "${PIPESTATUS[0]}" -eq 0
 done
+recap+=("$(printf '%-10s %5ss  %d fuzz targets, %ss each, no crash' fuzz $(( $(date +%s) - t0 )) ${#fuzzers[@]} "$FUZZ_SECONDS")")
 
+echo
+echo "== summary"
+printf '%s\n' "${recap[@]}"
 stamp "all tests passed"
