@@ -2,6 +2,8 @@
 // Per row: vld3 de-interleaves 8 RGB pixels; 16-bit prefix sums of 8 lanes by
 // shift-and-add (vext with zero), widened to 32 bits, plus the running row total
 // (`carry`, broadcast in every lane), plus the previous table row. Bit-exact to scalar.
+// Empty without NEON (e.g. -mfpu=vfpv3-d16): the dispatcher then uses the scalar path.
+#if defined(__ARM_NEON) || defined(__ARM_NEON__)
 #include <arm_neon.h>
 
 #include "integral_rows.hpp"
@@ -133,3 +135,4 @@ void gray(const uint8_t* src, int srcStride, int width, int height, uint32_t* su
 }
 
 }  // namespace cuetrack::integral::neon
+#endif
