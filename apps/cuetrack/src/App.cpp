@@ -43,7 +43,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     return kExitUsage;
   }
 
-  FrameSource* source = openSource(opt.source, opt.seed, err, sizeof err);
+  FrameSource* source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err);
   if (!source) {
     reporter.report(err);
     return kExitSource;

@@ -15,7 +15,7 @@
 namespace cuetrack::app {
 namespace {
 
-FrameSource* openSynth(const char* scene, uint64_t seed, char* err, size_t errLen) {
+FrameSource* openSynth(const char* scene, uint64_t seed, int frames, char* err, size_t errLen) {
   SceneSpec spec;
   if (!makeScene(scene, &spec)) {
     int n = std::snprintf(err, errLen, "synth:%s: unknown scene (known:", scene);
@@ -26,6 +26,7 @@ FrameSource* openSynth(const char* scene, uint64_t seed, char* err, size_t errLe
       std::snprintf(err + n, errLen - static_cast<size_t>(n), ")");
     return nullptr;
   }
+  if (frames > 0) spec.frameCount = frames;
   static SyntheticSource source(spec, seed);  // ~2.6 MiB, built once on first use
   return &source;
 }
@@ -48,13 +49,13 @@ FrameSource* openKinect(char* err, size_t errLen) {
 
 }  // namespace
 
-FrameSource* openSource(const char* spec, uint64_t seed, char* err, size_t errLen) {
+FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen) {
   if (spec == nullptr) {
 #if defined(CUETRACK_HAVE_KINECT)
     char why[160] = "";
     if (countKinects(why, sizeof why) > 0) return openKinect(err, errLen);
 #endif
-    return openSynth(kDefaultScene, seed, err, errLen);
+    return openSynth(kDefaultScene, seed, frames, err, errLen);
   }
   if (std::strcmp(spec, "kinect") == 0) {
 #if defined(CUETRACK_HAVE_KINECT)
@@ -64,8 +65,8 @@ FrameSource* openSource(const char* spec, uint64_t seed, char* err, size_t errLe
     return nullptr;
 #endif
   }
-  if (std::strcmp(spec, "synth") == 0) return openSynth(kDefaultScene, seed, err, errLen);
-  if (std::strncmp(spec, "synth:", 6) == 0) return openSynth(spec + 6, seed, err, errLen);
+  if (std::strcmp(spec, "synth") == 0) return openSynth(kDefaultScene, seed, frames, err, errLen);
+  if (std::strncmp(spec, "synth:", 6) == 0) return openSynth(spec + 6, seed, frames, err, errLen);
 #if defined(CUETRACK_HAVE_OPEN_SOURCE)
   return openRecordedSource(spec, err, errLen);
 #else

@@ -10,7 +10,9 @@
 namespace cuetrack::app {
 
 // spec: nullptr (Kinect when present, else synth:<default scene>), "kinect",
-// "synth" / "synth:SCENE", or a recording path. nullptr + one line in err on failure.
-FrameSource* openSource(const char* spec, uint64_t seed, char* err, size_t errLen);
+// "synth" / "synth:SCENE", or a recording path. A synthetic scene runs for `frames`
+// frames when that is > 0 (the scene's own length otherwise). nullptr + one line in
+// err on failure.
+FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen);
 
 }  // namespace cuetrack::app

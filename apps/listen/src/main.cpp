@@ -29,7 +29,8 @@ const char* kUsage =
     "stdout, or with --csv a CSV file (header + one row per track; '-' = stdout). Other\n"
     "messages (ack, error, heartbeat) go to stdout, or to stderr with --csv.\n"
     "  --baud N             9600..921600 (default 115200)\n"
-    "  --send COMMAND       sent in order after opening: start:X,Y,W,H  reset  stop  rate:HZ\n"
+    "  --send COMMAND       start:X,Y,W,H  reset  stop  rate:HZ; sent in order as soon as\n"
+    "                       the first message shows the device is up\n"
     "  --tracks N           exit after N track messages\n"
     "  --idle-timeout S     exit with code 4 when nothing arrives for S seconds\n"
     "exit codes: 0 interrupted, port closed or --tracks reached; 1 bad command line;\n"
@@ -137,6 +138,8 @@ int main(int argc, char** argv) {
     problems.report(port.error());
     return 2;
   }
+  std::snprintf(err, sizeof err, "%s: listening at %ld baud", portPath, baud);
+  problems.report(err);
   static platform::FdTrackSink tracks;
   if (csvPath) {
     if (!tracks.openFile(csvPath, platform::TextFormat::Csv)) {
@@ -149,18 +152,11 @@ int main(int argc, char** argv) {
   FdLines messages(csvPath ? 2 : 1);  // with --csv, stdout may carry the CSV itself
   listen::Listener listener(port, tracks, messages, problems);
 
-  for (int i = 0; i < numSends; ++i) {
-    if (!listener.send(commands[i])) {
-      std::snprintf(err, sizeof err, "%s: cannot send '%s': %s", portPath, sends[i], port.error());
-      problems.report(err);
-      return 2;
-    }
-  }
-
   platform::MonotonicClock clock;
   uint64_t lastRxUs = clock.nowUs();
   int code = 0;
   const char* why = "interrupted";
+  bool sent = numSends == 0;
   while (!platform::stopRequested()) {
     bool received = false;
     const listen::PollResult r = listener.poll(100, &received);
@@ -174,6 +170,19 @@ int main(int argc, char** argv) {
       break;
     }
     if (received) lastRxUs = clock.nowUs();
+    const listen::ListenStats& st = listener.stats();
+    if (!sent && st.tracks + st.heartbeats + st.acks + st.errors > 0) {
+      // The device is up and reading (it flushes its input when it opens the port).
+      sent = true;
+      for (int i = 0; i < numSends; ++i) {
+        if (!listener.send(commands[i])) {
+          std::snprintf(err, sizeof err, "%s: cannot send '%s': %s", portPath, sends[i],
+                        port.error());
+          problems.report(err);
+          return 2;
+        }
+      }
+    }
     if (maxTracks >= 0 && listener.stats().tracks >= static_cast<uint32_t>(maxTracks)) {
       why = "--tracks reached";
       break;

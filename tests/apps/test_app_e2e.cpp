@@ -1,0 +1,365 @@
+// End to end with the real binaries over socat pseudo-terminal pairs:
+//   cuetrack --serial A  ->  pty  ->  cuetrack-listen B   (tracks equal)
+//   commands over the pty start/reset/stop the app; garbage both ways is rejected and
+//   counted and the stream resynchronises; the app survives its serial peer going
+//   away and reconnects when it returns.
+// Every wait polls an observable condition with a bound; no sleep synchronises.
+#include <catch2/catch.hpp>
+
+#include <signal.h>
+
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "Process.hpp"
+#include "cuetrack/platform/linux/SerialPort.hpp"
+#include "cuetrack_proto.h"
+
+using namespace cuetrack;
+using namespace cuetrack::test;
+using platform::IoStatus;
+using platform::SerialPort;
+
+namespace {
+
+constexpr int kAppTimeoutMs = 120000;  // generous: 2 cores shared by many builds
+
+std::string slurp(const std::string& path) {
+  static char buf[1 << 20];
+  if (!readFile(path.c_str(), buf, sizeof buf)) return "";
+  return buf;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    out.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
+
+// CSV rows without the first column (seq: each link numbers its own messages).
+std::vector<std::string> rowsWithoutSeq(const std::string& csv) {
+  std::vector<std::string> out;
+  for (const std::string& l : lines(csv)) {
+    const size_t comma = l.find(',');
+    if (comma != std::string::npos) out.push_back(l.substr(comma + 1));
+  }
+  return out;
+}
+
+// Host end of the protocol over a real port.
+struct HostPort {
+  SerialPort port;
+  ctp_decoder_t dec{};
+  std::vector<ctp_message_t> got;
+  HostPort() { ctp_decoder_init(&dec); }
+  // Reads until pred(message) is true for a new message, or timeoutMs passes.
+  template <typename P>
+  bool until(P pred, int timeoutMs) {
+    bool hit = false;
+    waitFor(
+        [&] {
+          uint8_t buf[512];
+          const platform::IoResult r = port.read(buf, sizeof buf, 10);
+          for (size_t i = 0; i < r.bytes && !hit; ++i) {
+            ctp_frame_t f;
+            if (ctp_decoder_push(&dec, buf[i], &f, nullptr) != CTP_PUSH_FRAME) continue;
+            ctp_message_t m;
+            if (ctp_parse_message(&f, &m) != CTP_OK) continue;
+            got.push_back(m);
+            hit = pred(m);
+          }
+          return hit;
+        },
+        timeoutMs);
+    return hit;
+  }
+  void send(const ctp_command_t& c) {
+    uint8_t w[CTP_MAX_WIRE];
+    const size_t n = ctp_encode_command(&c, w, sizeof w);
+    REQUIRE(port.write(w, n).bytes == n);
+  }
+  void sendRaw(const uint8_t* b, size_t n) {
+    size_t done = 0;
+    waitFor(
+        [&] {
+          const platform::IoResult r = port.write(b + done, n - done);
+          done += r.bytes;
+          return done == n;
+        },
+        5000);
+    REQUIRE(done == n);
+  }
+};
+
+bool isTrack(const ctp_message_t& m, uint8_t state) {
+  return m.type == CTP_MSG_TRACK && m.u.track.state == state;
+}
+
+struct TempDir {
+  char path[64];
+  TempDir() {
+    std::snprintf(path, sizeof path, "/tmp/cuetrack-e2e-XXXXXX");
+    REQUIRE(mkdtemp(path) != nullptr);
+  }
+  ~TempDir() {
+    char cmd[128];
+    std::snprintf(cmd, sizeof cmd, "rm -rf %s", path);
+    if (std::system(cmd) != 0) std::fprintf(stderr, "could not remove %s\n", path);
+  }
+  std::string file(const char* name) const { return std::string(path) + "/" + name; }
+};
+
+bool haveSocat() {
+  return fileExists("/usr/bin/socat");
+}
+
+}  // namespace
+
+TEST_CASE("tracks sent by cuetrack over a pty equal the tracks cuetrack-listen decodes") {
+  if (!haveSocat()) {
+    WARN("socat not installed: skipped");
+    return;
+  }
+  TempDir tmp;
+  PtyPair pty;
+  REQUIRE(pty.start());
+  const std::string csvListen = tmp.file("listen.csv"), csvApp = tmp.file("app.csv");
+  const std::string listenErr = tmp.file("listen.err"), appErr = tmp.file("app.err");
+  ChildProcess listener;
+  const char* largv[] = {
+      CUETRACK_LISTEN_BIN, pty.b(), "--baud",         "921600", "--csv", csvListen.c_str(),
+      "--tracks",          "40",    "--idle-timeout", "60",     nullptr};
+  REQUIRE(listener.start(largv, nullptr, listenErr.c_str()));
+  // The listener flushes stale input when it opens the port: start the app after that.
+  REQUIRE(waitFor([&] { return slurp(listenErr).find("listening") != std::string::npos; }, 10000));
+
+  ChildProcess app;
+  const char* aargv[] = {CUETRACK_APP_BIN, "--serial", pty.a(), "--baud",  "921600", "--out",
+                         csvApp.c_str(),   "--frames", "40",    "--quiet", nullptr};
+  REQUIRE(app.start(aargv, nullptr, appErr.c_str()));
+  int appStatus = -1, listenStatus = -1;
+  REQUIRE(app.wait(kAppTimeoutMs, &appStatus));
+  INFO(slurp(appErr));
+  REQUIRE(appStatus == 0);
+  REQUIRE(listener.wait(30000, &listenStatus));
+  INFO(slurp(listenErr));
+  REQUIRE(listenStatus == 0);
+
+  const std::vector<std::string> a = rowsWithoutSeq(slurp(csvApp));
+  const std::vector<std::string> l = rowsWithoutSeq(slurp(csvListen));
+  REQUIRE(a.size() == 41);  // header + 40 frames
+  REQUIRE(l == a);
+  CHECK(a[5].find("tracking") != std::string::npos);
+  CHECK(slurp(listenErr).find("rejected 0") != std::string::npos);
+  CHECK(slurp(listenErr).find("seq gaps 0") != std::string::npos);
+}
+
+TEST_CASE("commands over a pty start, reset and stop the app; garbage gets ERROR replies") {
+  if (!haveSocat()) {
+    WARN("socat not installed: skipped");
+    return;
+  }
+  TempDir tmp;
+  PtyPair pty;
+  REQUIRE(pty.start());
+  HostPort host;
+  REQUIRE(host.port.open(pty.b(), 115200));
+  const std::string appErr = tmp.file("app.err");
+  ChildProcess app;
+  const char* aargv[] = {CUETRACK_APP_BIN, "--serial", pty.a(),   "--no-gt",
+                         "--frames",       "100000",   "--quiet", nullptr};
+  REQUIRE(app.start(aargv, nullptr, appErr.c_str()));
+  INFO(slurp(appErr));
+  REQUIRE(host.until([](const ctp_message_t& m) { return isTrack(m, CTP_STATE_IDLE); }, 30000));
+
+  ctp_command_t start{};
+  start.type = CTP_CMD_START;
+  start.id = 100;
+  start.box_px[0] = 280;
+  start.box_px[1] = 240;
+  start.box_px[2] = 40;
+  start.box_px[3] = 60;
+  host.send(start);
+  REQUIRE(host.until(
+      [](const ctp_message_t& m) { return m.type == CTP_MSG_ACK && m.u.ack.cmd_id == 100; },
+      30000));
+  REQUIRE(host.until([](const ctp_message_t& m) { return isTrack(m, CTP_STATE_TRACKING); }, 30000));
+
+  ctp_command_t reset{};
+  reset.type = CTP_CMD_RESET;
+  reset.id = 101;
+  host.send(reset);
+  REQUIRE(host.until(
+      [](const ctp_message_t& m) { return m.type == CTP_MSG_ACK && m.u.ack.cmd_id == 101; },
+      30000));
+  REQUIRE(host.until([](const ctp_message_t& m) { return isTrack(m, CTP_STATE_IDLE); }, 30000));
+
+  // Random bytes, a truncated command and a corrupted one, each ended by a delimiter.
+  std::mt19937 rng(7);
+  std::vector<uint8_t> junk;
+  for (int i = 0; i < 300; ++i) junk.push_back(static_cast<uint8_t>(rng()));
+  junk.push_back(0);
+  uint8_t w[CTP_MAX_WIRE];
+  const size_t n = ctp_encode_command(&start, w, sizeof w);
+  junk.insert(junk.end(), w, w + 6);  // truncated...
+  junk.push_back(0);                  // ...and cut off
+  w[3] ^= 0x40;                       // corrupted
+  junk.insert(junk.end(), w, w + n);
+  host.sendRaw(junk.data(), junk.size());
+  REQUIRE(host.until(
+      [](const ctp_message_t& m) { return m.type == CTP_MSG_ERROR && m.u.error.cmd_type == 0; },
+      30000));
+  // The stream resynchronised: a good command still works and frames keep coming.
+  ctp_command_t rate{};
+  rate.type = CTP_CMD_SET_RATE;
+  rate.id = 102;
+  rate.rate_hz = 0;
+  host.send(rate);
+  REQUIRE(host.until(
+      [](const ctp_message_t& m) { return m.type == CTP_MSG_ACK && m.u.ack.cmd_id == 102; },
+      30000));
+  REQUIRE(host.until([](const ctp_message_t& m) { return m.type == CTP_MSG_TRACK; }, 30000));
+
+  ctp_command_t stop{};
+  stop.type = CTP_CMD_STOP;
+  stop.id = 103;
+  host.send(stop);
+  REQUIRE(host.until(
+      [](const ctp_message_t& m) { return m.type == CTP_MSG_ACK && m.u.ack.cmd_id == 103; },
+      30000));
+  int status = -1;
+  REQUIRE(app.wait(30000, &status));
+  CHECK(status == 0);
+  CHECK(slurp(appErr).find("STOP command") == std::string::npos);  // --quiet: no summary
+}
+
+TEST_CASE("cuetrack-listen --send starts tracking and prints the ACK") {
+  if (!haveSocat()) {
+    WARN("socat not installed: skipped");
+    return;
+  }
+  TempDir tmp;
+  PtyPair pty;
+  REQUIRE(pty.start());
+  const std::string appErr = tmp.file("app.err"), listenOut = tmp.file("listen.out"),
+                    listenErr = tmp.file("listen.err");
+  ChildProcess app;
+  const char* aargv[] = {CUETRACK_APP_BIN, "--serial", pty.a(),   "--no-gt",
+                         "--frames",       "100000",   "--quiet", nullptr};
+  REQUIRE(app.start(aargv, nullptr, appErr.c_str()));
+  ChildProcess listener;
+  const char* largv[] = {CUETRACK_LISTEN_BIN,   pty.b(),    "--send",
+                         "start:280,240,40,60", "--tracks", "200",
+                         "--idle-timeout",      "60",       nullptr};
+  REQUIRE(listener.start(largv, listenOut.c_str(), listenErr.c_str()));
+  REQUIRE(waitFor([&] { return slurp(listenOut).find(" tracking box=") != std::string::npos; },
+                  kAppTimeoutMs));
+  int status = -1;
+  REQUIRE(listener.wait(kAppTimeoutMs, &status));
+  CHECK(status == 0);
+  const std::string out = slurp(listenOut);
+  INFO(out.substr(0, 2000));
+  CHECK(out.find("ack seq=") != std::string::npos);
+  CHECK(out.find(" start id=1") != std::string::npos);
+  app.signal(SIGTERM);
+  REQUIRE(app.wait(30000, &status));
+  CHECK(status == 0);
+}
+
+TEST_CASE("garbage from the device side is rejected and counted by the listener") {
+  if (!haveSocat()) {
+    WARN("socat not installed: skipped");
+    return;
+  }
+  TempDir tmp;
+  PtyPair pty;
+  REQUIRE(pty.start());
+  const std::string csv = tmp.file("l.csv"), listenErr = tmp.file("l.err");
+  ChildProcess listener;
+  const char* largv[] = {CUETRACK_LISTEN_BIN, pty.b(), "--csv", csv.c_str(), "--tracks", "10",
+                         "--idle-timeout",    "30",    nullptr};
+  REQUIRE(listener.start(largv, nullptr, listenErr.c_str()));
+  REQUIRE(waitFor([&] { return slurp(listenErr).find("listening") != std::string::npos; }, 10000));
+  HostPort device;  // plays the device on the other end
+  REQUIRE(device.port.open(pty.a(), 115200));
+  std::mt19937 rng(3);
+  std::vector<uint8_t> stream;
+  for (uint32_t i = 0; i < 10; ++i) {
+    ctp_track_t t{};
+    t.seq = i;
+    t.time_us = 1000u * i;
+    t.state = CTP_STATE_TRACKING;
+    t.box_px[2] = 10;
+    t.box_px[3] = 10;
+    uint8_t w[CTP_MAX_WIRE];
+    const size_t n = ctp_encode_track(&t, w, sizeof w);
+    // Before each good frame: random bytes, a truncated copy, a bit-flipped copy.
+    for (int k = 0; k < 40; ++k) stream.push_back(static_cast<uint8_t>(rng()));
+    stream.push_back(0);
+    stream.insert(stream.end(), w, w + n / 2);
+    stream.push_back(0);
+    std::vector<uint8_t> flipped(w, w + n);
+    flipped[5] ^= 0x08;
+    stream.insert(stream.end(), flipped.begin(), flipped.end());
+    stream.insert(stream.end(), w, w + n);
+  }
+  device.sendRaw(stream.data(), stream.size());
+  int status = -1;
+  REQUIRE(listener.wait(30000, &status));
+  const std::string err = slurp(listenErr);
+  INFO(err);
+  REQUIRE(status == 0);
+  const std::vector<std::string> rows = lines(slurp(csv));
+  REQUIRE(rows.size() == 11);
+  CHECK(rows[10].find("9,9000,tracking") == 0);
+  // At least the 10 truncated + 10 flipped frames were refused.
+  const size_t at = err.find("rejected ");
+  REQUIRE(at != std::string::npos);
+  CHECK(std::atoi(err.c_str() + at + 9) >= 20);
+}
+
+TEST_CASE("when the serial peer goes away the app reports it, keeps tracking, reconnects") {
+  if (!haveSocat()) {
+    WARN("socat not installed: skipped");
+    return;
+  }
+  TempDir tmp;
+  PtyPair pty;
+  REQUIRE(pty.start());
+  const std::string appErr = tmp.file("app.err"), appCsv = tmp.file("app.csv");
+  ChildProcess app;
+  const char* aargv[] = {CUETRACK_APP_BIN, "--serial", pty.a(),   "--out",   appCsv.c_str(),
+                         "--frames",       "100000",   "--no-gt", "--quiet", nullptr};
+  REQUIRE(app.start(aargv, nullptr, appErr.c_str()));
+  {
+    HostPort host;
+    REQUIRE(host.port.open(pty.b(), 115200));
+    REQUIRE(host.until([](const ctp_message_t& m) { return m.type == CTP_MSG_TRACK; }, 30000));
+  }
+  pty.stop();  // the peer (and the device node) vanish
+  REQUIRE(waitFor([&] { return slurp(appErr).find("tracking continues") != std::string::npos; },
+                  30000));
+  REQUIRE(app.running());
+  const size_t rowsBefore = lines(slurp(appCsv)).size();
+  REQUIRE(waitFor([&] { return lines(slurp(appCsv)).size() > rowsBefore + 5; }, 30000));
+
+  REQUIRE(pty.start());
+  REQUIRE(waitFor([&] { return slurp(appErr).find("reconnected") != std::string::npos; }, 30000));
+  HostPort again;
+  REQUIRE(again.port.open(pty.b(), 115200));
+  REQUIRE(again.until([](const ctp_message_t& m) { return m.type == CTP_MSG_TRACK; }, 30000));
+  app.signal(SIGTERM);
+  int status = -1;
+  REQUIRE(app.wait(30000, &status));
+  INFO(slurp(appErr));
+  CHECK(status == 0);
+}

@@ -1,0 +1,77 @@
+// cuetrack's command line.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "Options.hpp"
+
+using namespace cuetrack::app;
+
+namespace {
+ParseResult parse(std::initializer_list<const char*> args, AppOptions* o, std::string* err) {
+  static char storage[16][64];
+  static char* argv[17];
+  int argc = 0;
+  argv[argc++] = const_cast<char*>("cuetrack");
+  for (const char* a : args) {
+    std::snprintf(storage[argc], sizeof storage[0], "%s", a);
+    argv[argc] = storage[argc];
+    ++argc;
+  }
+  char buf[256] = "";
+  const ParseResult r = parseOptions(argc, argv, o, buf, sizeof buf);
+  *err = buf;
+  return r;
+}
+}  // namespace
+
+TEST_CASE("defaults: best preset, synthetic-or-Kinect source, ground truth on") {
+  AppOptions o;
+  std::string err;
+  REQUIRE(parse({}, &o, &err) == ParseResult::Run);
+  CHECK(o.source == nullptr);
+  CHECK(std::string(o.preset) == "best");
+  CHECK(o.useGroundTruth);
+  CHECK(o.frames == -1);
+  CHECK(o.baud == 115200);
+}
+
+TEST_CASE("every option is read") {
+  AppOptions o;
+  std::string err;
+  REQUIRE(parse({"--source", "synth:occlusion", "--box", "1,2.5,30,40", "--no-gt", "--serial",
+                 "/dev/ttyS1", "--baud", "9600", "--out", "x.csv", "--stdout", "--frames", "12",
+                 "--config", "2.1", "--seed", "99", "--quiet"},
+                &o, &err) == ParseResult::Run);
+  CHECK(std::string(o.source) == "synth:occlusion");
+  CHECK(o.hasBox);
+  CHECK(o.box.y == 2.5f);
+  CHECK(o.box.h == 40.f);
+  CHECK_FALSE(o.useGroundTruth);
+  CHECK(std::string(o.serialPath) == "/dev/ttyS1");
+  CHECK(o.baud == 9600);
+  CHECK(std::string(o.outPath) == "x.csv");
+  CHECK(o.forceStdout);
+  CHECK(o.frames == 12);
+  CHECK(std::string(o.preset) == "2.1");
+  CHECK(o.seed == 99);
+  CHECK(o.quiet);
+}
+
+TEST_CASE("bad command lines give one line naming the option") {
+  AppOptions o;
+  std::string err;
+  CHECK(parse({"--box", "1,2,0,4"}, &o, &err) == ParseResult::Error);
+  CHECK(err.find("--box 1,2,0,4") == 0);
+  CHECK(parse({"--box", "1,2,3"}, &o, &err) == ParseResult::Error);
+  CHECK(parse({"--frames", "-3"}, &o, &err) == ParseResult::Error);
+  CHECK(err.find("--frames -3") == 0);
+  CHECK(parse({"--serial"}, &o, &err) == ParseResult::Error);
+  CHECK(err.find("--serial needs a value") == 0);
+  CHECK(parse({"--baud", "fast"}, &o, &err) == ParseResult::Error);
+  CHECK(parse({"--seed", "x"}, &o, &err) == ParseResult::Error);
+  CHECK(parse({"--what"}, &o, &err) == ParseResult::Error);
+  CHECK(err.find("unknown option '--what'") == 0);
+  CHECK(parse({"--help"}, &o, &err) == ParseResult::Help);
+  CHECK(std::string(usageText()).find("exit codes") != std::string::npos);
+}

@@ -1,0 +1,369 @@
+// The app's pipeline with fakes all round: a tiny frame source, a stand-in tracker,
+// a settable clock, memory sinks and an in-memory serial cable. Covers target
+// selection, the commands and their replies, rate limit, heartbeats, rejected input,
+// a stalled or vanished peer and failing outputs.
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "Pipeline.hpp"
+#include "SerialLink.hpp"
+#include "cuetrack/platform/fake/FakeClock.hpp"
+#include "cuetrack/platform/fake/FakeSerial.hpp"
+#include "cuetrack/platform/fake/MemoryReporter.hpp"
+#include "cuetrack/platform/fake/MemorySink.hpp"
+
+using namespace cuetrack;
+using namespace cuetrack::app;
+using namespace cuetrack::platform;
+
+namespace {
+
+// 64x48 grey frames, 30 fps timestamps, optional ground truth in every frame.
+class TinySource final : public FrameSource {
+ public:
+  TinySource(int frames, bool withTruth) : _frames(frames), _withTruth(withTruth) {}
+  ReadStatus next(FrameSlot& out) override {
+    if (_failAt == _index) return ReadStatus::Error;
+    if (_index >= _frames) return ReadStatus::End;
+    out.rgb.resize(64, 48);
+    out.hasDepth = false;
+    out.timeUs = static_cast<uint64_t>(_index) * 33333u;
+    out.index = _index;
+    out.hasGroundTruth = _withTruth;
+    out.groundTruth = Box{10.f, 12.f, 20.f, 16.f};
+    ++_index;
+    return ReadStatus::Ok;
+  }
+  const char* error() const override { return "tiny.seq: frame 3: truncated"; }
+  const char* name() const override { return "tiny"; }
+  void failAt(int i) { _failAt = i; }
+
+ private:
+  int _frames;
+  bool _withTruth;
+  int _index = 0;
+  int _failAt = -1;
+};
+
+// Moves the box 1 px right per update; refuses boxes with x < 0.
+class StubTracker final : public TrackerPort {
+ public:
+  bool configure(const char*, uint64_t, const Clock*) override { return true; }
+  int init(const Frame&, const Box& box, const char** why) override {
+    if (box.x < 0.f) {
+      *why = "BoxOutsideImage";
+      return 2;
+    }
+    _box = box;
+    ++inits;
+    return 0;
+  }
+  TrackResult update(const Frame&) override {
+    ++updates;
+    _box.x += 1.f;
+    TrackResult r;
+    r.state = lost ? TrackState::Lost : TrackState::Tracking;
+    r.box = _box;
+    r.confidence = 0.75f;
+    return r;
+  }
+  void reset() override { ++resets; }
+  int inits = 0, updates = 0, resets = 0;
+  bool lost = false;
+
+ private:
+  Box _box{};
+};
+
+// The host end of the cable: sends commands, decodes what the app sent.
+struct Host {
+  explicit Host(ByteStream& s) : stream(s) { ctp_decoder_init(&dec); }
+  void send(const ctp_command_t& c) {
+    uint8_t w[CTP_MAX_WIRE];
+    const size_t n = ctp_encode_command(&c, w, sizeof w);
+    REQUIRE(stream.write(w, n).bytes == n);
+  }
+  void sendRaw(const std::vector<uint8_t>& bytes) {
+    REQUIRE(stream.write(bytes.data(), bytes.size()).bytes == bytes.size());
+  }
+  // Decodes everything that arrived since the last call.
+  std::vector<ctp_message_t> drain() {
+    std::vector<ctp_message_t> out;
+    uint8_t buf[512];
+    for (;;) {
+      const IoResult r = stream.read(buf, sizeof buf, 0);
+      if (r.bytes == 0) break;
+      for (size_t i = 0; i < r.bytes; ++i) {
+        ctp_frame_t f;
+        if (ctp_decoder_push(&dec, buf[i], &f, nullptr) == CTP_PUSH_FRAME) {
+          ctp_message_t m;
+          REQUIRE(ctp_parse_message(&f, &m) == CTP_OK);
+          out.push_back(m);
+        }
+      }
+    }
+    return out;
+  }
+  ByteStream& stream;
+  ctp_decoder_t dec;
+};
+
+ctp_command_t command(uint8_t type, uint16_t id) {
+  ctp_command_t c{};
+  c.type = type;
+  c.id = id;
+  return c;
+}
+
+int countType(const std::vector<ctp_message_t>& ms, uint8_t type) {
+  int n = 0;
+  for (const auto& m : ms) n += m.type == type;
+  return n;
+}
+
+// Everything a test needs, in static storage once (FrameSlot is 1.5 MiB).
+struct Rig {
+  Rig(int frames, bool truth, const PipelineOptions& o = {})
+      : source(frames, truth),
+        link(cable.a(), clock, reporter),
+        pipeline(source, slot(), tracker, clock, reporter, o),
+        host(cable.b()) {
+    pipeline.addSink(&sink);
+    pipeline.attachLink(&link);
+  }
+  static FrameSlot& slot() {
+    static FrameSlot s;
+    return s;
+  }
+  StepResult step() {
+    clock.advanceUs(33333);
+    return pipeline.step();
+  }
+  FakeClock clock{1000};
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  MemorySink sink;
+  TinySource source;
+  StubTracker tracker;
+  SerialLink link;
+  Pipeline pipeline;
+  Host host;
+};
+
+}  // namespace
+
+TEST_CASE("ground truth starts tracking; every frame reaches the sink and the link") {
+  static Rig rig(5, true);
+  for (int i = 0; i < 5; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  REQUIRE(rig.step() == StepResult::Done);
+  REQUIRE(rig.sink.size() == 5);
+  CHECK(rig.sink.at(0).state == CTP_STATE_TRACKING);
+  CHECK(rig.sink.at(0).box_px[0] == 10);  // the init frame reports the given box
+  CHECK(rig.sink.at(0).confidence == 65535);
+  CHECK(rig.sink.at(4).box_px[0] == 14);  // 4 updates, 1 px each
+  CHECK(rig.sink.at(4).seq == 4);
+  CHECK(rig.sink.at(3).time_us == 99999);
+  CHECK(rig.tracker.inits == 1);
+  const auto msgs = rig.host.drain();
+  REQUIRE(countType(msgs, CTP_MSG_TRACK) == 5);
+  CHECK(msgs.back().u.track.box_px[0] == 14);
+  CHECK(msgs.back().u.track.seq == 4);
+}
+
+TEST_CASE("--box wins over ground truth; a refused --box ends the run with BoxRejected") {
+  PipelineOptions o;
+  o.hasBox = true;
+  o.box = Box{30.f, 5.f, 8.f, 8.f};
+  static Rig good(3, true, o);
+  REQUIRE(good.step() == StepResult::Continue);
+  CHECK(good.sink.at(0).box_px[0] == 30);
+  o.box.x = -50.f;
+  static Rig bad(3, true, o);
+  REQUIRE(bad.step() == StepResult::BoxRejected);
+  CHECK(bad.reporter.countContaining("--box -50,5,8,8 refused by the tracker: BoxOutsideImage") ==
+        1);
+}
+
+TEST_CASE("START, RESET and STOP over the serial link, each answered") {
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  static Rig rig(100, true, o);
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.sink.at(0).state == CTP_STATE_IDLE);  // no target until told
+
+  ctp_command_t start = command(CTP_CMD_START, 41);
+  start.box_px[0] = 5;
+  start.box_px[1] = 6;
+  start.box_px[2] = 7;
+  start.box_px[3] = 8;
+  rig.host.send(start);
+  REQUIRE(rig.step() == StepResult::Continue);
+  auto msgs = rig.host.drain();
+  REQUIRE(countType(msgs, CTP_MSG_ACK) == 1);
+  for (const auto& m : msgs) {
+    if (m.type == CTP_MSG_ACK) {
+      CHECK(m.u.ack.cmd_type == CTP_CMD_START);
+      CHECK(m.u.ack.cmd_id == 41);
+    }
+  }
+  CHECK(msgs.back().type == CTP_MSG_TRACK);
+  CHECK(msgs.back().u.track.state == CTP_STATE_TRACKING);
+  CHECK(msgs.back().u.track.box_px[0] == 5);
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.sink.at(2).box_px[0] == 6);
+
+  rig.host.send(command(CTP_CMD_RESET, 42));
+  REQUIRE(rig.step() == StepResult::Continue);
+  msgs = rig.host.drain();
+  REQUIRE(countType(msgs, CTP_MSG_ACK) == 1);
+  CHECK(rig.tracker.resets == 1);
+  CHECK(msgs.back().u.track.state == CTP_STATE_IDLE);
+
+  rig.host.send(command(CTP_CMD_STOP, 43));
+  REQUIRE(rig.step() == StepResult::Stopped);
+  msgs = rig.host.drain();
+  REQUIRE(msgs.size() == 1);
+  CHECK(msgs[0].type == CTP_MSG_ACK);
+  CHECK(msgs[0].u.ack.cmd_id == 43);
+  // seq runs across all message types without gaps
+  CHECK(msgs[0].u.ack.seq == rig.link.stats().sent - 1);
+}
+
+TEST_CASE("a START the tracker refuses gets ERROR rejected and leaves the app idle") {
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  static Rig rig(10, false, o);
+  ctp_command_t start = command(CTP_CMD_START, 9);
+  start.box_px[0] = -3;
+  start.box_px[2] = 4;
+  start.box_px[3] = 4;
+  rig.host.send(start);
+  REQUIRE(rig.step() == StepResult::Continue);
+  const auto msgs = rig.host.drain();
+  REQUIRE(countType(msgs, CTP_MSG_ERROR) == 1);
+  CHECK(msgs[0].u.error.code == CTP_E_REJECTED);
+  CHECK(msgs[0].u.error.cmd_id == 9);
+  CHECK(msgs.back().u.track.state == CTP_STATE_IDLE);
+  CHECK(rig.reporter.countContaining("refused") == 1);
+}
+
+TEST_CASE("garbage, corrupt and malformed inbound frames are answered with ERROR and counted") {
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  static Rig rig(10, false, o);
+  std::vector<uint8_t> junk = {0x12, 0x34, 0x56, 0x00};  // invalid frame -> framing or CRC
+  rig.host.sendRaw(junk);
+  uint8_t w[CTP_MAX_WIRE];
+  ctp_command_t reset = command(CTP_CMD_RESET, 77);
+  size_t n = ctp_encode_command(&reset, w, sizeof w);
+  w[2] ^= 0x01;  // corrupt one bit -> CRC error
+  rig.host.sendRaw(std::vector<uint8_t>(w, w + n));
+  ctp_command_t badRate = command(CTP_CMD_SET_RATE, 78);
+  badRate.rate_hz = 5000;  // out of range
+  rig.host.send(badRate);
+  const uint8_t notACommand[3] = {1, 2, 3};
+  n = ctp_encode_frame(CTP_MSG_TRACK, notACommand, sizeof notACommand, w, sizeof w);
+  rig.host.sendRaw(std::vector<uint8_t>(w, w + n));
+  rig.host.send(command(CTP_CMD_RESET, 79));  // a good one after all that
+  REQUIRE(rig.step() == StepResult::Continue);
+  const auto msgs = rig.host.drain();
+  REQUIRE(countType(msgs, CTP_MSG_ERROR) == 4);
+  REQUIRE(countType(msgs, CTP_MSG_ACK) == 1);
+  std::vector<int> codes;
+  for (const auto& m : msgs)
+    if (m.type == CTP_MSG_ERROR) codes.push_back(m.u.error.code);
+  CHECK((codes[0] == CTP_E_CRC || codes[0] == CTP_E_FRAMING));
+  CHECK(codes[1] == CTP_E_CRC);
+  CHECK(codes[2] == CTP_E_VALUE);
+  CHECK(codes[3] == CTP_E_TYPE);
+  CHECK(rig.link.stats().rxErrors == 4);
+  CHECK(rig.pipeline.commands().accepted() == 1);
+}
+
+TEST_CASE("SET_RATE thins the serial stream but not the other outputs") {
+  static Rig rig(31, true);
+  ctp_command_t rate = command(CTP_CMD_SET_RATE, 5);
+  rate.rate_hz = 10;  // 30 fps frames -> every 3rd
+  rig.host.send(rate);
+  for (int i = 0; i < 31; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  const auto msgs = rig.host.drain();
+  CHECK(countType(msgs, CTP_MSG_ACK) == 1);
+  CHECK(countType(msgs, CTP_MSG_TRACK) == 11);  // frames 0, 3, ..., 30
+  CHECK(rig.sink.size() == 31);
+  rate.rate_hz = 0;
+  rig.host.send(rate);
+  static Rig again(0, true);
+  (void)again;
+}
+
+TEST_CASE("a heartbeat goes out after 1 s without any message") {
+  static Rig rig(0, false);  // no frames at all
+  rig.host.drain();
+  rig.pipeline.serviceLink();
+  CHECK(rig.host.drain().empty());
+  rig.clock.advanceUs(1000001);
+  rig.pipeline.serviceLink();
+  const auto msgs = rig.host.drain();
+  REQUIRE(msgs.size() == 1);
+  REQUIRE(msgs[0].type == CTP_MSG_HEARTBEAT);
+  CHECK(msgs[0].u.heartbeat.state == CTP_STATE_IDLE);
+  CHECK(msgs[0].u.heartbeat.time_us == rig.clock.nowUs());
+  rig.pipeline.serviceLink();
+  CHECK(rig.host.drain().empty());  // not again until another second passes
+}
+
+TEST_CASE("a vanished serial peer is reported, tracking continues, the link comes back") {
+  static Rig rig(50, true);
+  REQUIRE(rig.step() == StepResult::Continue);
+  rig.cable.setPlugged(false);
+  for (int i = 0; i < 5; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  CHECK_FALSE(rig.link.connected());
+  CHECK(rig.reporter.countContaining("peer gone; tracking continues") == 1);
+  CHECK(rig.sink.size() == 6);  // other outputs carried on
+  rig.cable.setPlugged(true);
+  for (int i = 0; i < 20; ++i) REQUIRE(rig.step() == StepResult::Continue);  // > 0.5 s retry
+  CHECK(rig.link.connected());
+  CHECK(rig.reporter.countContaining("reconnected") == 1);
+  CHECK(rig.link.stats().reconnects == 1);
+  const auto msgs = rig.host.drain();
+  REQUIRE(countType(msgs, CTP_MSG_TRACK) > 0);
+  CHECK(msgs.back().u.track.state == CTP_STATE_TRACKING);
+}
+
+TEST_CASE("a stalled peer never blocks: messages that do not fit are dropped and counted") {
+  static Rig rig(200, true);
+  rig.cable.setCapacityAtoB(100);  // the peer stops reading after 100 bytes
+  for (int i = 0; i < 200; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.sink.size() == 200);
+  CHECK(rig.link.stats().txDropped > 100);
+  CHECK(rig.link.stats().sent + rig.link.stats().txDropped >= 200);
+}
+
+TEST_CASE("a failing output is reported once, the rest goes on, the run is marked") {
+  static Rig rig(5, true);
+  rig.sink.setFailing(true);
+  for (int i = 0; i < 5; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.reporter.countContaining("memory: write failed (simulated); output stopped") == 1);
+  CHECK(rig.pipeline.outputFailed());
+  CHECK(countType(rig.host.drain(), CTP_MSG_TRACK) == 5);
+}
+
+TEST_CASE("a source error is reported with the source's line and ends the run") {
+  static Rig rig(10, true);
+  rig.source.failAt(2);
+  REQUIRE(rig.step() == StepResult::Continue);
+  REQUIRE(rig.step() == StepResult::Continue);
+  REQUIRE(rig.step() == StepResult::SourceError);
+  CHECK(rig.reporter.countContaining("tiny.seq: frame 3: truncated") == 1);
+}
+
+TEST_CASE("lost then still lost goes out as LOST then SEARCHING") {
+  static Rig rig(5, true);
+  REQUIRE(rig.step() == StepResult::Continue);
+  rig.tracker.lost = true;
+  REQUIRE(rig.step() == StepResult::Continue);
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.sink.at(1).state == CTP_STATE_LOST);
+  CHECK(rig.sink.at(2).state == CTP_STATE_SEARCHING);
+}
