@@ -1,0 +1,186 @@
+// Synthetic RGB-D scenes with exact ground truth: textured upright cylinders and
+// boxes moving in 3D before a textured wall and floor, seen by a Kinect-like camera.
+//
+//   SceneSpec spec;
+//   if (!makeScene("twin-crossing", &spec)) ...;   // names: sceneName(i), i < sceneCount()
+//   spec.frameCount = 60;                          // optional tweaks
+//   static SyntheticSource src(spec, seed);        // ~2.6 MiB: static or allocate once
+//   while (src.next(slot) == ReadStatus::Ok) { slot.groundTruth; src.truth().centreMm; }
+//
+// Deterministic by seed (same spec + seed -> same bytes on every platform that has
+// IEEE floats), no OpenCV, no allocation after construction: it is also the on-board
+// app's embedded default source.
+//
+// Depth model (Kinect v1): true depth -> raw disparity (1/8 px steps, KinectDepth.hpp)
+// + Gaussian disparity noise -> rounded -> mm; no reading outside [minDepthMm,
+// maxDepthMm] and in the projector's shadow beside near edges (left of near objects,
+// the projector sitting baselineMm to the right of the IR camera).
+#pragma once
+
+#include <cstdint>
+
+#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/Image.hpp"
+#include "cuetrack/drivers/FrameSource.hpp"
+#include "cuetrack/drivers/KinectDepth.hpp"
+
+namespace cuetrack {
+
+inline constexpr int kMaxSceneObjects = 4;
+inline constexpr int kTextureSize = 64;  // texels per side of a procedural texture tile
+
+enum class TextureKind : uint8_t {
+  Flat,     // one colour: nothing for appearance features to hold on to
+  Patches,  // random coloured rectangles (rich, seeded)
+  Stripes,  // horizontal stripes of colour A and B
+  Checker,  // checkerboard of colour A and B
+};
+
+struct TextureSpec {
+  TextureKind kind = TextureKind::Patches;
+  Rgb8 colourA{180, 60, 40};
+  Rgb8 colourB{40, 90, 200};
+  uint32_t seed = 1;    // pattern seed (same seed + kind + colours = same texture)
+  float texelMm = 4.f;  // size of one texel on the surface [mm]
+};
+
+// Position over time, per axis: start + velocity * t + amplitude * sin(2 pi t / period + phase).
+struct MotionSpec {
+  float startMm[3] = {0.f, 0.f, 2000.f};  // camera coordinates: x right, y down, z forward [mm]
+  float velocityMmPerS[3] = {0.f, 0.f, 0.f};
+  float amplitudeMm[3] = {0.f, 0.f, 0.f};
+  float periodS[3] = {1.f, 1.f, 1.f};
+  float phaseRad[3] = {0.f, 0.f, 0.f};
+};
+
+enum class ShapeKind : uint8_t {
+  Cylinder,  // upright (axis along camera y)
+  Box,       // axis-aligned
+};
+
+struct SceneObject {
+  ShapeKind shape = ShapeKind::Cylinder;
+  float radiusMm = 60.f;     // cylinder radius, or box half-width along x [mm]
+  float halfDepthMm = 60.f;  // box half-depth along z [mm] (cylinders: unused)
+  float heightMm = 200.f;    // [mm]
+  MotionSpec motion{};
+  TextureSpec texture{};
+  bool shaded = true;  // Lambertian shading; off for the untextured scene
+};
+
+struct SceneSpec {
+  char name[32] = "custom";
+  int width = 640;  // [px] <= kMaxImageWidth
+  int height = 480;
+  int frameCount = 150;
+  float fps = 30.f;
+  // Intrinsics at 640x480; scaled with the image size.
+  CameraIntrinsics intrinsics = kKinectV1Intrinsics;
+
+  // Background: a wall at wallDepthMm spanning x in [wallLeftMm, wallRightMm]
+  // (beyond its edges: an opening far out of range), and a floor plane floorYMm
+  // below the camera (0 = no floor).
+  float wallDepthMm = 4000.f;
+  float wallLeftMm = -1400.f;
+  float wallRightMm = 4000.f;
+  float openingDepthMm = 12000.f;
+  float floorYMm = 1000.f;
+  TextureSpec wallTexture{TextureKind::Patches, {200, 190, 160}, {90, 110, 80}, 11, 20.f};
+  TextureSpec floorTexture{TextureKind::Checker, {150, 120, 90}, {110, 85, 60}, 12, 150.f};
+
+  SceneObject objects[kMaxSceneObjects]{};
+  int numObjects = 0;
+  int targetIndex = 0;  // the object the ground truth describes
+
+  // Lighting: gain(t) = 1 + lightAmplitude * sin(2 pi t / lightPeriodS), times lightStepGain
+  // from lightStepFrame on (when >= 0).
+  float lightAmplitude = 0.f;
+  float lightPeriodS = 2.f;
+  int lightStepFrame = -1;
+  float lightStepGain = 1.f;
+  float colourNoise = 2.f;  // uniform per-channel sensor noise, +- [0..255 levels]
+
+  // Kinect depth model.
+  float disparityNoiseRaw = 0.35f;  // sigma of the disparity noise [raw units = 1/8 px]
+  bool shadows = true;
+  float baselineMm = 75.f;  // IR projector to camera
+  uint16_t minDepthMm = 500;
+  uint16_t maxDepthMm = 8000;
+};
+
+// Fills *out with a named scene at 640x480, 150 frames, 30 fps; false for an unknown name.
+//   moving        textured cylinder moving in x, y and z before a textured background
+//   twin-crossing target and a same-textured twin crossing it 700 mm further back
+//   occlusion     a box passes in front of the target, hiding it completely for a while
+//   untextured    grey cylinder on a grey wall and floor of the same grey: only depth sees it
+//   lighting      moving target under slow brightness change plus a step (lights dimmed)
+//   approach      target comes from 4.5 m to 0.8 m: strong perspective scale change
+//   box           a textured box moving (shape variety)
+bool makeScene(const char* name, SceneSpec* out);
+int sceneCount();
+const char* sceneName(int i);  // nullptr when out of range
+
+// Exact truth for the last frame produced.
+struct SynthTruth {
+  float centreMm[3] = {0, 0, 0};  // target centre, camera coordinates [mm]
+  float radiusMm = 0.f;           // cylinder radius / box half-width [mm]
+  float heightMm = 0.f;
+  Box projectedBox{};  // bounding box of the whole target's projection, clipped to the image [px]
+  int visiblePixels = 0;    // target pixels not hidden by nearer objects
+  int projectedPixels = 0;  // target pixels with nothing in front
+  float visibleFraction() const {
+    return projectedPixels > 0 ? static_cast<float>(visiblePixels) / projectedPixels : 0.f;
+  }
+};
+
+class SyntheticSource final : public FrameSource {
+ public:
+  SyntheticSource(const SceneSpec& spec, uint64_t seed);
+
+  ReadStatus next(FrameSlot& out) override;
+  const char* error() const override { return _error; }
+  const char* name() const override { return _spec.name; }
+  int frameCount() const override { return _spec.frameCount; }
+
+  // Renders frame `index` (0-based) without advancing; next() calls it in sequence.
+  bool render(int index, FrameSlot& out);
+  const SynthTruth& truth() const { return _truth; }
+  const SceneSpec& spec() const { return _spec; }
+  // Position of object i at time t [s].
+  void objectPosition(int i, float tS, float outMm[3]) const;
+
+ private:
+  using Texture = Rgb8[kTextureSize * kTextureSize];
+  struct Posed {
+    int index;
+    float c[3];
+  };
+
+  void renderBackground(FrameSlot& out, uint32_t frameSeed);
+  void renderObject(const Posed& p, FrameSlot& out, bool isTarget);
+  void applyDepthModel(FrameSlot& out, uint32_t frameSeed);
+  Box projectObject(const Posed& p) const;
+
+  SceneSpec _spec;
+  uint64_t _seed;
+  CameraIntrinsics _k{};
+  int _next = 0;
+  char _error[160] = "";
+  SynthTruth _truth{};
+  kinect::RawToMmTable _rawToMm{};
+  static constexpr int kColourNoiseLen = 8192;  // >= 2 * 3 * kMaxImageWidth
+  float _gaussian[4096];                        // N(0,1) samples, drawn at construction
+  int8_t _colourNoise[kColourNoiseLen];         // uniform in [-colourNoise, colourNoise]
+  Texture _wallTexture;
+  Texture _floorTexture;
+  Texture _objectTexture[kMaxSceneObjects];
+  float _invFx = 0, _invFy = 0;
+  // Per-pixel scratch, fixed: true depth and which object (255 = background) [mm].
+  float _zMm[kMaxPixels];
+  uint8_t _owner[kMaxPixels];
+  float _rowInvZ[kMaxImageWidth];   // depth model scratch, one row [1/mm]
+  uint16_t _rowMm[kMaxImageWidth];  // raw disparity of one row before the shadow test
+};
+
+}  // namespace cuetrack
