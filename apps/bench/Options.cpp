@@ -64,6 +64,7 @@ const char* usage() {
          "  --csv DIR          per-frame overlaps, DIR/<sequence>.overlap.csv\n"
          "  --plots DIR        overlap-over-time plots, DIR/<sequence>.overlap.png\n"
          "  --results DIR      BoBoT result files, DIR/<sequence>/<tracker>.run<k>.txt\n"
+         "  --overlay DIR      frames with the boxes of run 1 drawn, DIR/<sequence>/NNNNNN.jpg\n"
          "  --quiet            no progress on stderr\n";
 }
 
@@ -132,12 +133,13 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       }
       o->seed = s;
     } else if (a == "--json" || a == "--markdown" || a == "--csv" || a == "--plots" ||
-               a == "--results") {
+               a == "--results" || a == "--overlay") {
       if (!value(&v)) return false;
       std::string& dst = a == "--json"       ? o->jsonPath
                          : a == "--markdown" ? o->markdownPath
                          : a == "--csv"      ? o->csvDir
                          : a == "--plots"    ? o->plotDir
+                         : a == "--overlay"  ? o->overlayDir
                                              : o->resultsDir;
       dst = v;
     } else if (a == "--paper") {

@@ -25,7 +25,7 @@ struct Options {
   size_t maxMemMiB = 4096;
   bool skipBadFrames = false;
   bool quiet = false;
-  std::string jsonPath, markdownPath, csvDir, plotDir, resultsDir;
+  std::string jsonPath, markdownPath, csvDir, plotDir, resultsDir, overlayDir;
   PaperReference paper = PaperReference::None;
 };
 

@@ -8,6 +8,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "Runner.hpp"
+
 namespace cuetrack::bench {
 namespace {
 
@@ -147,6 +149,41 @@ bool writeOverlapPlot(const std::string& path, const std::vector<EntryResult>& e
     *err = path + ": cannot write PNG: " + e.what();
   }
   return false;
+}
+
+bool writeOverlayFrames(const std::string& dir, const Sequence& seq,
+                        const std::vector<EntryResult>& entries, size_t sequence,
+                        std::string* err) {
+  if (!makeDirs(dir, err)) return false;
+  const size_t palette = sizeof kPalette / sizeof kPalette[0];
+  auto rect = [](const Box& b) {
+    return cv::Rect(cvRound(b.x), cvRound(b.y), cvRound(b.w), cvRound(b.h));
+  };
+  for (size_t i = 0; i < seq.frames.size(); ++i) {
+    const CachedFrame& f = seq.frames[i];
+    if (f.bgr.empty()) continue;
+    cv::Mat img = f.bgr.clone();
+    if (f.hasGroundTruth && !f.groundTruth.empty())
+      cv::rectangle(img, rect(f.groundTruth), cv::Scalar(255, 255, 255), 2);
+    for (size_t e = 0; e < entries.size(); ++e) {
+      const SequenceResult& s = entries[e].sequences[sequence];
+      if (s.ran && i < s.firstRunBoxes.size() && !s.firstRunBoxes[i].empty())
+        cv::rectangle(img, rect(s.firstRunBoxes[i]), kPalette[e % palette], 1);
+    }
+    char name[32];
+    std::snprintf(name, sizeof name, "/%06d.jpg", f.index);
+    const std::string path = dir + name;
+    try {
+      if (!cv::imwrite(path, img)) {
+        *err = path + ": cannot write JPEG";
+        return false;
+      }
+    } catch (const cv::Exception& ex) {
+      *err = path + ": cannot write JPEG: " + ex.what();
+      return false;
+    }
+  }
+  return true;
 }
 
 bool writeBobotResult(const std::string& path, const std::string& header,

@@ -29,6 +29,12 @@ bool writeBobotResult(const std::string& path, const std::string& header,
                       const std::vector<IndexedBox>& boxes, int imageWidth, int imageHeight,
                       std::string* err);
 
+// Overlay frames: DIR/NNNNNN.jpg, the sequence's colour with the ground truth (white)
+// and each entry's first-run box (the plot's colours) drawn in.
+struct Sequence;
+bool writeOverlayFrames(const std::string& dir, const Sequence& seq,
+                        const std::vector<EntryResult>& entries, size_t sequence, std::string* err);
+
 // Makes `path` and its parents; false with *err on failure.
 bool makeDirs(const std::string& path, std::string* err);
 // "opencv-kcf" / "cuetrack-1.1": a label usable in file names.

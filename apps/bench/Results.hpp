@@ -17,6 +17,8 @@ struct SequenceResult {
   // Mean overlap over runs for each evaluated frame, in frame order (plots, CSV).
   std::vector<int> frameIndex;
   std::vector<double> meanOverlap;
+  // The boxes of the first run, one per frame of the sequence (--overlay).
+  std::vector<Box> firstRunBoxes;
 };
 
 struct EntryResult {

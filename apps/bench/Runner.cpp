@@ -201,6 +201,8 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
     }
     progress.endRun();
     runs.push_back(acc.figures());
+    if (run == 0)
+      for (const IndexedBox& b : boxes) result.firstRunBoxes.push_back(b.box);
     allocsPerRun.push_back(static_cast<double>(allocs));
     if (!options.resultsDir.empty()) {
       const std::string dir = options.resultsDir + "/" + seq.name;

@@ -132,6 +132,11 @@ int main(int argc, char** argv) {
         ++failures;
       }
     }
+    if (!options.overlayDir.empty() &&
+        !writeOverlayFrames(options.overlayDir + "/" + seq.name, seq, results, index, &err)) {
+      std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
+      ++failures;
+    }
   }
 
   std::fputs(textReport(results).c_str(), stdout);
