@@ -59,7 +59,9 @@ inline float fastLog(float v) {
 inline float fastExp(float v) {
   v = clampf(v, -87.f, 87.f);
   const int k = floorToInt(v * 1.44269504088896f + 0.5f);
-  const float r = v - static_cast<float>(k) * kLn2;  // |r| <= ~0.35
+  // Cody-Waite: ln 2 in two parts so r stays exact for large k.
+  const float kf = static_cast<float>(k);
+  const float r = (v - kf * 0.693145751953125f) - kf * 1.42860682030941723212e-6f;  // |r| <= ~0.35
   const float p =
       1.f +
       r * (1.f + r * (0.5f + r * (0.166666667f + r * (0.0416666667f +

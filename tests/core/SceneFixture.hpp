@@ -1,0 +1,71 @@
+// A small synthetic RGB-D scene for the tracker tests: a textured square moving
+// over a textured background, nearer than it. No dependency beyond core.
+#pragma once
+
+#include <cstdint>
+
+#include "cuetrack/core/Frame.hpp"
+#include "cuetrack/core/Rng.hpp"
+
+namespace cuetrack::test {
+
+class MovingSquare {
+ public:
+  static constexpr int kW = 320, kH = 240, kSide = 48;
+  static constexpr int kTex = 64;
+
+  explicit MovingSquare(uint32_t seed = 1) {
+    Rng r(seed);
+    for (int i = 0; i < kTex * kTex; ++i) {
+      const int b = ((i % kTex) / 8 + (i / kTex) / 8) % 3;
+      _bg[i] = Rgb8{static_cast<uint8_t>(90 + 40 * b + r.below(20)),
+                    static_cast<uint8_t>(110 + r.below(30)), static_cast<uint8_t>(80 + 30 * b)};
+    }
+    for (int i = 0; i < kSide * kSide; ++i) {
+      const int x = i % kSide, y = i / kSide;
+      const bool q = ((x / 12) + (y / 12)) % 2 == 0;
+      _obj[i] = q ? Rgb8{220, 60, 40} : Rgb8{40, 70, 200};
+      if (x > 18 && x < 30 && y > 18 && y < 30) _obj[i] = Rgb8{240, 230, 60};
+    }
+  }
+
+  // Object position at frame t [px, top-left].
+  void position(int t, float* x, float* y) const {
+    *x = 40.f + 3.f * static_cast<float>(t);
+    *y = 80.f + 30.f * static_cast<float>(__builtin_sinf(0.12f * static_cast<float>(t)));
+  }
+  Box truth(int t) const {
+    float x, y;
+    position(t, &x, &y);
+    return Box{x, y, static_cast<float>(kSide), static_cast<float>(kSide)};
+  }
+
+  Frame render(int t, bool withDepth) {
+    float fx, fy;
+    position(t, &fx, &fy);
+    const int ox = static_cast<int>(fx + 0.5f), oy = static_cast<int>(fy + 0.5f);
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        const int i = y * kW + x;
+        const int u = x - ox, v = y - oy;
+        const bool in = u >= 0 && v >= 0 && u < kSide && v < kSide;
+        _rgb[i] = in ? _obj[v * kSide + u] : _bg[(y % kTex) * kTex + (x % kTex)];
+        _depth[i] = in ? 1500 : static_cast<uint16_t>(3000 + (x % 7));
+        if (!in && (x * 7 + y * 3) % 23 == 0) _depth[i] = 0;  // a few holes
+      }
+    Frame f;
+    f.rgb = RgbView{_rgb, kW, kH, kW};
+    if (withDepth) f.depthMm = DepthView{_depth, kW, kH, kW};
+    f.timeUs = static_cast<uint64_t>(t) * 33333u;
+    f.intrinsics = CameraIntrinsics{260.f, 260.f, 160.f, 120.f};
+    return f;
+  }
+
+ private:
+  Rgb8 _bg[kTex * kTex];
+  Rgb8 _obj[kSide * kSide];
+  Rgb8 _rgb[kW * kH];
+  uint16_t _depth[kW * kH];
+};
+
+}  // namespace cuetrack::test

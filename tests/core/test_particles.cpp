@@ -1,0 +1,153 @@
+// Particle filter parts: motion model statistics, depth correction onto a known
+// surface, projection, and resampling.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "cuetrack/core/ParticleFilter.hpp"
+
+using namespace cuetrack;
+
+TEST_CASE("3D motion: velocity noise variance grows as sigma^2 dt", "[core][motion]") {
+  MotionModel3d m;
+  m.velocityNoiseMm2PerS2 = 550.f;
+  m.positionNoise = 0.f;  // isolate the paper's term
+  Rng rng(3);
+  const float dt = 0.1f;
+  double s[3] = {0, 0, 0}, s2[3] = {0, 0, 0}, px = 0;
+  const int n = 40000;
+  for (int i = 0; i < n; ++i) {
+    Particle q;
+    q.p[2] = 2000.f;
+    q.v[0] = 100.f;  // mm/s
+    q.size[0] = 200.f;
+    q.size[1] = 300.f;
+    m.predict(q, rng, dt, 1.f);
+    px += q.p[0];
+    for (int a = 0; a < 3; ++a) {
+      const double dv = q.v[a] - (a == 0 ? 100.0 : 0.0);
+      s[a] += dv;
+      s2[a] += dv * dv;
+    }
+    REQUIRE(q.size[0] == 200.f);  // fixed cylinder unless adaptation is on
+  }
+  REQUIRE(px / n == Approx(10.0).margin(0.05));  // r' = r + v dt
+  for (int a = 0; a < 3; ++a) {
+    REQUIRE(s[a] / n == Approx(0.0).margin(0.2));
+    REQUIRE(s2[a] / n == Approx(550.0 * dt).epsilon(0.04));
+  }
+}
+
+TEST_CASE("2D motion: unbiased position noise proportional to window size", "[core][motion]") {
+  MotionModel2d m;
+  Rng rng(9);
+  const int n = 40000;
+  double s = 0, s2 = 0, ls = 0;
+  for (int i = 0; i < n; ++i) {
+    Particle q;
+    q.p[0] = 100.f;
+    q.size[0] = q.size[1] = 50.f;
+    m.predict(q, rng, 1.f);
+    s += q.p[0] - 100.0;
+    s2 += (q.p[0] - 100.0) * (q.p[0] - 100.0);
+    ls += std::log(q.size[0] * q.size[1] / 2500.0);
+  }
+  const double side = 50.0;
+  const double expected =
+      side * side * (m.velocityNoise * m.velocityNoise + m.positionNoise * m.positionNoise);
+  REQUIRE(s / n == Approx(0.0).margin(0.05));
+  REQUIRE(s2 / n == Approx(expected).epsilon(0.04));
+  REQUIRE(ls / n == Approx(0.0).margin(0.002));  // no scale drift
+}
+
+namespace {
+constexpr int W = 160, H = 120;
+uint16_t depth[W * H];
+Rgb8 rgb[W * H];
+IntegralChannels channels;
+}  // namespace
+
+TEST_CASE("depth correction puts particles onto a known plane", "[core][depth]") {
+  // A fronto-parallel wall at 1800 mm, with a few holes.
+  for (int i = 0; i < W * H; ++i) depth[i] = (i % 7 == 0) ? 0 : 1800;
+  Frame f;
+  f.rgb = RgbView{rgb, W, H, W};
+  f.depthMm = DepthView{depth, W, H, W};
+  f.intrinsics = CameraIntrinsics{130.f, 130.f, 80.f, 60.f};
+  channels.compute(f, PixelRect{0, 0, W, H}, true);
+  Rng rng(4);
+  for (int trial = 0; trial < 200; ++trial) {
+    Particle q;
+    q.size[0] = 150.f;  // D
+    q.size[1] = 300.f;  // H
+    q.p[2] = rng.uniform(900.f, 3500.f);
+    q.p[0] = rng.uniform(-0.3f, 0.3f) * q.p[2];
+    q.p[1] = rng.uniform(-0.3f, 0.3f) * q.p[2];
+    const Particle before = q;
+    const float dt = 1.f / 30.f;
+    const Box b0 = projectCylinder(before, f.intrinsics);
+    REQUIRE(correctDepth(q, channels, f.intrinsics, dt, W, H));
+    // Front surface on the wall: centre at wall + D/2.
+    REQUIRE(q.p[2] == Approx(1800.f + 75.f).epsilon(1e-5));
+    // Along the viewing ray: the projected centre does not move.
+    const Box b1 = projectCylinder(q, f.intrinsics);
+    REQUIRE(b1.x + 0.5f * b1.w == Approx(b0.x + 0.5f * b0.w).margin(1e-2));
+    REQUIRE(b1.y + 0.5f * b1.h == Approx(b0.y + 0.5f * b0.h).margin(1e-2));
+    // Velocity corrected by the move / dt.
+    for (int a = 0; a < 3; ++a) REQUIRE(q.v[a] == Approx((q.p[a] - before.p[a]) / dt).margin(0.5f));
+  }
+  // No valid depth: untouched.
+  for (int i = 0; i < W * H; ++i) depth[i] = 0;
+  channels.compute(f, PixelRect{0, 0, W, H}, true);
+  Particle q;
+  q.p[2] = 2000.f;
+  q.size[0] = 150.f;
+  q.size[1] = 300.f;
+  REQUIRE_FALSE(correctDepth(q, channels, f.intrinsics, 0.033f, W, H));
+  REQUIRE(q.p[2] == 2000.f);
+}
+
+TEST_CASE("the cylinder projects to the right rectangle", "[core][depth]") {
+  Particle q;
+  q.p[0] = 100.f;
+  q.p[1] = -50.f;
+  q.p[2] = 2000.f;
+  q.size[0] = 200.f;
+  q.size[1] = 400.f;
+  const CameraIntrinsics k{500.f, 520.f, 320.f, 240.f};
+  const Box b = projectCylinder(q, k);
+  REQUIRE(b.w == Approx(50.f));
+  REQUIRE(b.h == Approx(104.f));
+  REQUIRE(b.x + 0.5f * b.w == Approx(345.f));
+  REQUIRE(b.y + 0.5f * b.h == Approx(227.f));
+  q.p[2] = -10.f;
+  REQUIRE(projectCylinder(q, k).empty());
+}
+
+TEST_CASE("systematic resampling keeps particles in proportion to weight", "[core][filter]") {
+  static ParticleFilter pf;
+  pf.setSize(2000);
+  Rng rng(2);
+  double mass[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 2000; ++i) {
+    const int k = static_cast<int>(rng.below(4));
+    pf[i].p[0] = static_cast<float>(k);
+    pf.weights()[i] = static_cast<float>(k);  // weights 0, 1, 2, 3
+    mass[k] += k;
+  }
+  const double total = mass[1] + mass[2] + mass[3];
+  pf.resample(rng);
+  int count[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 2000; ++i) ++count[static_cast<int>(pf[i].p[0])];
+  REQUIRE(count[0] == 0);
+  for (int k = 1; k < 4; ++k) REQUIRE(count[k] == Approx(2000.0 * mass[k] / total).epsilon(0.03));
+  REQUIRE(pf.weights()[0] == 1.f);
+  // A single heavy particle takes (almost) everything.
+  for (int i = 0; i < 2000; ++i) {
+    pf[i].p[0] = static_cast<float>(i);
+    pf.weights()[i] = i == 777 ? 1e6f : 1e-6f;
+  }
+  pf.resample(rng);
+  int heavy = 0;
+  for (int i = 0; i < 2000; ++i) heavy += pf[i].p[0] == 777.f ? 1 : 0;
+  REQUIRE(heavy >= 1999);
+}

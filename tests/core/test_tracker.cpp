@@ -1,0 +1,160 @@
+// The whole tracker on a small synthetic scene: presets, init errors, every
+// preset tracking a plainly moving target, zero allocations, determinism.
+#include <catch2/catch.hpp>
+#include <cstring>
+
+#include "AllocCounter.hpp"
+#include "SceneFixture.hpp"
+#include "cuetrack/core/Tracker.hpp"
+
+using namespace cuetrack;
+
+namespace {
+Tracker tracker;  // large: static storage
+test::MovingSquare scene;
+
+struct RunStats {
+  int frames = 0, hits = 0;
+  double overlapSum = 0;
+  uint64_t allocations = 0;
+  uint64_t hash = 1469598103934665603ULL;  // FNV-1a over the result boxes' bits
+};
+
+void hashFloat(uint64_t& h, float v) {
+  uint32_t b;
+  std::memcpy(&b, &v, 4);
+  for (int i = 0; i < 4; ++i) {
+    h ^= (b >> (8 * i)) & 0xFFu;
+    h *= 1099511628211ULL;
+  }
+}
+
+RunStats run(const TrackerConfig& cfg, uint64_t seed, int frames, bool depth) {
+  RunStats s;
+  tracker.configure(cfg, seed);
+  const test::AllocScope scope;
+  REQUIRE(tracker.init(scene.render(0, depth), scene.truth(0)) == InitError::None);
+  for (int t = 1; t < frames; ++t) {
+    const TrackResult r = tracker.update(scene.render(t, depth));
+    const float o = overlap(r.box, scene.truth(t));
+    s.overlapSum += o;
+    s.hits += o > 1.f / 3.f ? 1 : 0;
+    ++s.frames;
+    hashFloat(s.hash, r.box.x);
+    hashFloat(s.hash, r.box.y);
+    hashFloat(s.hash, r.box.w);
+    hashFloat(s.hash, r.box.h);
+    hashFloat(s.hash, r.confidence);
+  }
+  s.allocations = scope.allocations();
+  return s;
+}
+}  // namespace
+
+TEST_CASE("preset names round-trip and configure the paper's tests", "[core][presets]") {
+  for (int i = 0; i < kNumPresets; ++i) {
+    Preset p;
+    REQUIRE(parsePreset(presetName(static_cast<Preset>(i)), &p));
+    REQUIRE(static_cast<int>(p) == i);
+  }
+  Preset p;
+  REQUIRE_FALSE(parsePreset("3.1", &p));
+  REQUIRE_FALSE(parsePreset(nullptr, &p));
+  const TrackerConfig t11 = presetConfig(Preset::Test1_1);
+  REQUIRE(t11.stateSpace == StateSpace::Image2d);
+  REQUIRE((t11.useGray && t11.useColour && !t11.useDepth && t11.dynamicPool));
+  REQUIRE(t11.numWeakClassifiers == 32);
+  REQUIRE_FALSE(presetConfig(Preset::Test1_2).dynamicPool);
+  REQUIRE(presetConfig(Preset::Test1_3).sampling == FeatureSampling::Dense);
+  REQUIRE_FALSE(presetConfig(Preset::Test1_4).useColour);
+  const TrackerConfig t21 = presetConfig(Preset::Test2_1);
+  REQUIRE(t21.stateSpace == StateSpace::Cylinder3d);
+  REQUIRE((t21.useDepth && t21.useColour && t21.useGray && t21.dynamicPool));
+  REQUIRE(t21.numWeakClassifiers == 23);
+  REQUIRE_FALSE(presetConfig(Preset::Test2_2).dynamicPool);
+  REQUIRE(presetConfig(Preset::Test2_3).sampling == FeatureSampling::Dense);
+  REQUIRE(presetConfig(Preset::Test2_3).stateSpace == StateSpace::Cylinder3d);
+  REQUIRE(presetConfig(Preset::Test2_4).stateSpace == StateSpace::Image2d);
+  REQUIRE(presetConfig(Preset::Test2_4).useDepth);
+  const TrackerConfig t25 = presetConfig(Preset::Test2_5);
+  REQUIRE((t25.useGray && !t25.useColour && !t25.useDepth));
+  const TrackerConfig best = presetConfig(Preset::Best);
+  REQUIRE((best.adaptCylinderSize && best.lostDetection && best.fallbackTo2d));
+  for (int i = 0; i < kNumPresets - 1; ++i) {
+    const TrackerConfig c = presetConfig(static_cast<Preset>(i));
+    REQUIRE_FALSE(c.adaptCylinderSize);
+    REQUIRE_FALSE(c.lostDetection);
+  }
+}
+
+TEST_CASE("init rejects bad input with a named error", "[core][tracker]") {
+  tracker.configure(presetConfig(Preset::Test1_1), 1);
+  const Frame f = scene.render(0, true);
+  REQUIRE(tracker.init(f, Box{10, 10, 0, 20}) == InitError::EmptyBox);
+  REQUIRE(tracker.init(f, Box{1000, 10, 20, 20}) == InitError::BoxOutsideImage);
+  REQUIRE(tracker.init(f, Box{10, 10, 5, 20}) == InitError::BoxTooSmall);
+  Frame noColour = f;
+  noColour.rgb = RgbView{};
+  REQUIRE(tracker.init(noColour, Box{10, 10, 30, 30}) == InitError::NoColour);
+  Frame huge = f;
+  huge.rgb.width = 2000;
+  REQUIRE(tracker.init(huge, Box{10, 10, 30, 30}) == InitError::ImageTooLarge);
+  // Idle after a failed init: update reports Idle and does nothing.
+  REQUIRE(tracker.update(f).state == TrackState::Idle);
+
+  tracker.configure(presetConfig(Preset::Test2_1), 1);
+  REQUIRE(tracker.init(scene.render(0, false), scene.truth(0)) == InitError::NoDepth);
+  Frame noK = f;
+  noK.intrinsics = CameraIntrinsics{};
+  REQUIRE(tracker.init(noK, scene.truth(0)) == InitError::NoIntrinsics);
+  REQUIRE(tracker.init(f, scene.truth(0)) == InitError::None);
+  REQUIRE(tracker.uses3d());
+
+  // `best` without depth falls back to 2D RGB.
+  tracker.configure(presetConfig(Preset::Best), 1);
+  REQUIRE(tracker.init(scene.render(0, false), scene.truth(0)) == InitError::None);
+  REQUIRE_FALSE(tracker.uses3d());
+  REQUIRE_FALSE(tracker.usesDepthFeatures());
+  for (int i = 0; i < kNumPresets; ++i)
+    REQUIRE(std::strlen(toString(static_cast<InitError>(i))) > 0);
+}
+
+TEST_CASE("every preset tracks a plainly moving target without allocating", "[core][tracker]") {
+  for (int i = 0; i < kNumPresets; ++i) {
+    const Preset p = static_cast<Preset>(i);
+    const TrackerConfig cfg = presetConfig(p);
+    const bool depth = cfg.useDepth || cfg.stateSpace == StateSpace::Cylinder3d;
+    const RunStats s = run(cfg, 7, 60, depth);
+    INFO("preset " << presetName(p) << " hits " << s.hits << "/" << s.frames << " mean overlap "
+                   << s.overlapSum / s.frames);
+    REQUIRE(s.hits >= s.frames * 98 / 100);
+    REQUIRE(s.allocations == 0);
+  }
+}
+
+TEST_CASE("the same seed gives the same track bit for bit", "[core][tracker]") {
+  const TrackerConfig cfg = presetConfig(Preset::Test2_1);
+  const RunStats a = run(cfg, 42, 25, true);
+  const RunStats b = run(cfg, 42, 25, true);
+  const RunStats c = run(cfg, 43, 25, true);
+  REQUIRE(a.hash == b.hash);
+  REQUIRE(a.hash != c.hash);
+  const TrackerConfig cfg2 = presetConfig(Preset::Test1_1);
+  REQUIRE(run(cfg2, 5, 20, false).hash == run(cfg2, 5, 20, false).hash);
+}
+
+TEST_CASE("reset returns to idle and keeps the configuration", "[core][tracker]") {
+  tracker.configure(presetConfig(Preset::Test1_2), 3);
+  REQUIRE(tracker.init(scene.render(0, false), scene.truth(0)) == InitError::None);
+  REQUIRE(tracker.update(scene.render(1, false)).state == TrackState::Tracking);
+  tracker.reset();
+  REQUIRE(tracker.update(scene.render(2, false)).state == TrackState::Idle);
+  REQUIRE_FALSE(tracker.config().dynamicPool);
+  // A frame of another size is ignored (last box returned), not a crash.
+  REQUIRE(tracker.init(scene.render(0, false), scene.truth(0)) == InitError::None);
+  Frame small = scene.render(1, false);
+  small.rgb.width = 100;
+  const TrackResult r = tracker.update(small);
+  REQUIRE(r.state == TrackState::Tracking);
+  REQUIRE(r.box.w == Approx(48.f));
+}
