@@ -33,7 +33,8 @@ uint16_t ctp_crc16(const uint8_t* data, size_t len) {
   for (size_t i = 0; i < len; ++i) {
     crc ^= (uint16_t)((uint16_t)data[i] << 8);
     for (int b = 0; b < 8; ++b) {
-      crc = (crc & 0x8000u) ? (uint16_t)((crc << 1) ^ 0x1021u) : (uint16_t)(crc << 1);
+      crc = (crc & 0x8000u) ? (uint16_t)(((unsigned)crc << 1) ^ 0x1021u)
+                            : (uint16_t)((unsigned)crc << 1);
     }
   }
   return crc;
