@@ -1,0 +1,85 @@
+// fakenect recordings (libfreenect's fakenect-record): INDEX.txt naming
+// r-<s>-<ts>.ppm colour, d-<s>-<ts>.pgm raw 11-bit depth ("P5 640 480 65535\n" +
+// little-endian uint16) and a-<s>-<ts>.dump accelerometer files, plus an optional
+// groundtruth.txt (BoBoT format) beside INDEX.txt.
+//
+// One frame per colour entry; its depth is the last depth entry before it in INDEX
+// (the one fakenect would have delivered last), or the first one after it when none
+// came before. Time is the seconds field relative to the first INDEX entry. Raw
+// disparity becomes mm with kinect::rawToMm. No decoding library: runs on the board.
+// After the first frame, reading allocates nothing (buffers are reused).
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cuetrack/drivers/FrameSource.hpp"
+#include "cuetrack/drivers/GroundTruth.hpp"
+#include "cuetrack/drivers/KinectDepth.hpp"
+#include "cuetrack/drivers/SourceOptions.hpp"
+
+namespace cuetrack {
+
+class FakenectReader final : public FrameSource {
+ public:
+  FakenectReader() = default;
+  // Reads INDEX.txt (and groundtruth.txt); false with error() on failure.
+  bool open(const char* dir, const SourceOptions& opt = {});
+
+  ReadStatus next(FrameSlot& out) override;
+  const char* error() const override { return _error; }
+  const char* name() const override { return _name.c_str(); }
+  int frameCount() const override { return static_cast<int>(_frames.size()); }
+  int skippedFrames() const override { return _skipped; }
+
+ private:
+  struct Frame {
+    int rgbEntry;
+    int depthEntry;  // -1: none
+  };
+  bool readFrame(const Frame& f, FrameSlot& out);
+  void entryPath(int entry, char* path, size_t len) const;
+
+  std::string _dir, _name;
+  std::vector<std::string> _files;  // INDEX entries, in order
+  std::vector<double> _seconds;
+  std::vector<Frame> _frames;
+  GroundTruth _gt;
+  SourceOptions _opt{};
+  int _next = 0;
+  int _emitted = 0;
+  int _skipped = 0;
+  double _t0 = 0.0;
+  std::vector<uint8_t> _buf;
+  kinect::RawToMmTable _rawToMm;
+  char _error[512] = "";
+};
+
+// Writes frames as a fakenect recording (INDEX.txt, d-/r-/a- files, groundtruth.txt
+// in BoBoT format when frames carry ground truth). Depth [mm] -> raw with
+// kinect::mmToRaw. Only 640x480 is valid for fakenect replay; other sizes are written
+// as they are (our reader takes them) and say so in warning().
+class FakenectWriter {
+ public:
+  FakenectWriter() = default;
+  FakenectWriter(const FakenectWriter&) = delete;
+  FakenectWriter& operator=(const FakenectWriter&) = delete;
+  ~FakenectWriter();
+  bool open(const char* dir, const char* sequenceName, char* err, size_t errLen);
+  bool write(const FrameSlot& frame, char* err, size_t errLen);
+  bool close(char* err, size_t errLen);
+  int framesWritten() const { return _count; }
+
+ private:
+  std::string _dir;
+  std::string _name;
+  std::FILE* _index = nullptr;
+  GtWriter _gt;
+  bool _gtOpen = false;
+  int _count = 0;
+  std::vector<uint8_t> _buf;
+};
+
+}  // namespace cuetrack

@@ -1,0 +1,22 @@
+// Whole-file reads into a reusable buffer with POSIX calls only (fopen would malloc a
+// FILE per call): after the first frame of a given size, reading allocates nothing.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace cuetrack::rec {
+
+// Replaces buf's contents with the file's bytes. On failure writes "path: reason" to err.
+bool readFile(const char* path, std::vector<uint8_t>& buf, char* err, size_t errLen);
+// Writes all bytes (creating/truncating the file). On failure writes "path: reason".
+bool writeFile(const char* path, const void* data, size_t len, char* err, size_t errLen);
+bool writeFile2(const char* path, const void* a, size_t aLen, const void* b, size_t bLen, char* err,
+                size_t errLen);
+bool isDirectory(const char* path);
+bool isFile(const char* path);
+// mkdir -p; on failure writes "path: reason".
+bool makeDirectories(const char* path, char* err, size_t errLen);
+
+}  // namespace cuetrack::rec

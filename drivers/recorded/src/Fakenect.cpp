@@ -1,0 +1,251 @@
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "cuetrack/drivers/FakenectReader.hpp"
+#include "cuetrack/drivers/FileBuffer.hpp"
+#include "cuetrack/drivers/RecordedParsers.hpp"
+
+namespace cuetrack {
+
+namespace {
+std::string baseName(const std::string& path) {
+  std::string p = path;
+  while (p.size() > 1 && p.back() == '/') p.pop_back();
+  const size_t slash = p.find_last_of('/');
+  return slash == std::string::npos ? p : p.substr(slash + 1);
+}
+}  // namespace
+
+bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
+  _dir = dir;
+  while (_dir.size() > 1 && _dir.back() == '/') _dir.pop_back();
+  _name = baseName(_dir);
+  _opt = opt;
+  _files.clear();
+  _seconds.clear();
+  _frames.clear();
+  _next = _emitted = _skipped = 0;
+  _error[0] = '\0';
+
+  const std::string indexPath = _dir + "/INDEX.txt";
+  std::vector<uint8_t> text;
+  if (!rec::readFile(indexPath.c_str(), text, _error, sizeof _error)) return false;
+  const char* t = reinterpret_cast<const char*>(text.data());
+  size_t pos = 0;
+  const char* line = nullptr;
+  size_t len = 0;
+  int lineNo = 0;
+  int lastDepth = -1;
+  std::vector<int> waitingForDepth;  // colour entries seen before any depth entry
+  char why[200];
+  while (rec::nextLine(t, text.size(), &pos, &line, &len)) {
+    ++lineNo;
+    if (rec::blankLine(line, len)) continue;
+    rec::IndexEntry e;
+    if (!rec::parseIndexLine(line, len, &e, why, sizeof why)) {
+      std::snprintf(_error, sizeof _error, "%s:%d: %s", indexPath.c_str(), lineNo, why);
+      return false;
+    }
+    const int entry = static_cast<int>(_files.size());
+    _files.emplace_back(line, len);
+    _seconds.push_back(e.seconds);
+    if (e.kind == 'd') {
+      lastDepth = entry;
+      for (int f : waitingForDepth) _frames[static_cast<size_t>(f)].depthEntry = entry;
+      waitingForDepth.clear();
+    } else if (e.kind == 'r') {
+      if (lastDepth < 0) waitingForDepth.push_back(static_cast<int>(_frames.size()));
+      _frames.push_back({entry, lastDepth});
+    }
+  }
+  if (_frames.empty()) {
+    std::snprintf(_error, sizeof _error, "%s: no colour (r-*.ppm) entries", indexPath.c_str());
+    return false;
+  }
+  _t0 = _seconds.front();
+
+  const std::string gtPath = opt.gtPath ? std::string(opt.gtPath) : _dir + "/groundtruth.txt";
+  if (opt.gtPath || rec::isFile(gtPath.c_str())) {
+    if (!_gt.load(gtPath.c_str(), GtFormat::Bobot, _error, sizeof _error)) return false;
+    const int n = static_cast<int>(_frames.size());
+    // BoBoT convention: one box per frame, or none for the last frame.
+    if (_gt.count() != n && _gt.count() != n - 1) {
+      std::snprintf(_error, sizeof _error, "%s: %d ground-truth boxes for %d frames",
+                    gtPath.c_str(), _gt.count(), n);
+      return false;
+    }
+  }
+  return true;
+}
+
+void FakenectReader::entryPath(int entry, char* path, size_t len) const {
+  std::snprintf(path, len, "%s/%s", _dir.c_str(), _files[static_cast<size_t>(entry)].c_str());
+}
+
+bool FakenectReader::readFrame(const Frame& f, FrameSlot& out) {
+  char path[1024];
+  char why[200];
+  rec::PnmHeader h;
+  entryPath(f.rgbEntry, path, sizeof path);
+  if (!rec::readFile(path, _buf, _error, sizeof _error)) return false;
+  if (!rec::parsePnmHeader(_buf.data(), _buf.size(), &h, why, sizeof why) ||
+      !out.rgb.resize(h.width, h.height) ||
+      !rec::decodePnmRgb(_buf.data(), _buf.size(), h, out.rgb.data(), why, sizeof why)) {
+    std::snprintf(_error, sizeof _error, "%s: %s", path, why);
+    return false;
+  }
+  out.hasDepth = false;
+  if (f.depthEntry >= 0) {
+    entryPath(f.depthEntry, path, sizeof path);
+    if (!rec::readFile(path, _buf, _error, sizeof _error)) return false;
+    if (!rec::parsePnmHeader(_buf.data(), _buf.size(), &h, why, sizeof why) ||
+        !rec::decodePnm16(_buf.data(), _buf.size(), h, rec::Endian::Little, out.depthMm.data(), why,
+                          sizeof why)) {
+      std::snprintf(_error, sizeof _error, "%s: %s", path, why);
+      return false;
+    }
+    if (h.width != out.rgb.width() || h.height != out.rgb.height()) {
+      std::snprintf(_error, sizeof _error, "%s: depth %dx%d does not match colour %dx%d", path,
+                    h.width, h.height, out.rgb.width(), out.rgb.height());
+      return false;
+    }
+    out.depthMm.resize(h.width, h.height);
+    uint16_t* d = out.depthMm.data();
+    const int n = h.width * h.height;
+    for (int i = 0; i < n; ++i) d[i] = _rawToMm(d[i]);
+    out.hasDepth = true;
+  }
+  return true;
+}
+
+ReadStatus FakenectReader::next(FrameSlot& out) {
+  for (;;) {
+    if (_next >= static_cast<int>(_frames.size())) return ReadStatus::End;
+    if (_opt.maxFrames >= 0 && _emitted >= _opt.maxFrames) return ReadStatus::End;
+    const int i = _next++;
+    const Frame& f = _frames[static_cast<size_t>(i)];
+    if (!readFrame(f, out)) {
+      if (_opt.skipBadFrames) {
+        ++_skipped;
+        continue;
+      }
+      return ReadStatus::Error;
+    }
+    out.index = i;
+    out.timeUs = static_cast<uint64_t>(
+        std::llround((_seconds[static_cast<size_t>(f.rgbEntry)] - _t0) * 1e6 < 0
+                         ? 0.0
+                         : (_seconds[static_cast<size_t>(f.rgbEntry)] - _t0) * 1e6));
+    // Kinect v1 intrinsics, scaled to the image (recordings carry none).
+    const float sx = static_cast<float>(out.rgb.width()) / 640.f;
+    const float sy = static_cast<float>(out.rgb.height()) / 480.f;
+    out.intrinsics = {kKinectV1Intrinsics.fx * sx, kKinectV1Intrinsics.fy * sy,
+                      kKinectV1Intrinsics.cx * sx, kKinectV1Intrinsics.cy * sy};
+    out.hasGroundTruth = _gt.boxAt(i, out.rgb.width(), out.rgb.height(), &out.groundTruth);
+    if (!out.hasGroundTruth) out.groundTruth = Box{};
+    ++_emitted;
+    return ReadStatus::Ok;
+  }
+}
+
+// ---------------------------------------------------------------------------
+
+FakenectWriter::~FakenectWriter() {
+  if (_index) std::fclose(_index);
+}
+
+bool FakenectWriter::open(const char* dir, const char* sequenceName, char* err, size_t errLen) {
+  if (!rec::makeDirectories(dir, err, errLen)) return false;
+  _dir = dir;
+  _name = sequenceName ? sequenceName : baseName(_dir);
+  const std::string indexPath = _dir + "/INDEX.txt";
+  _index = std::fopen(indexPath.c_str(), "wb");
+  if (!_index) {
+    std::snprintf(err, errLen, "%s: cannot create", indexPath.c_str());
+    return false;
+  }
+  _count = 0;
+  _gtOpen = false;
+  return true;
+}
+
+bool FakenectWriter::write(const FrameSlot& frame, char* err, size_t errLen) {
+  if (!_index) {
+    std::snprintf(err, errLen, "%s: writer not open", _dir.c_str());
+    return false;
+  }
+  const int w = frame.rgb.width(), h = frame.rgb.height();
+  // 1 s offset: fakenect treats a recorded time of 0 as "no previous frame".
+  const double seconds = 1.0 + static_cast<double>(frame.timeUs) * 1e-6;
+  const uint32_t ts = static_cast<uint32_t>(frame.timeUs);
+  char file[128], path[1024], header[64];
+
+  // Accelerometer: freenect_raw_tilt_state (3 x int16 accel, int8 tilt, pad, int32 status),
+  // level sensor at rest: 1 g = 819 counts on y.
+  uint8_t accel[12] = {0};
+  accel[2] = 819 & 0xFF;
+  accel[3] = 819 >> 8;
+  std::snprintf(file, sizeof file, "a-%.6f-%u.dump", seconds, ts);
+  std::snprintf(path, sizeof path, "%s/%s", _dir.c_str(), file);
+  if (!rec::writeFile(path, accel, sizeof accel, err, errLen)) return false;
+  std::fprintf(_index, "%s\n", file);
+
+  // Depth before colour: the reader pairs a colour frame with the depth before it.
+  if (frame.hasDepth) {
+    _buf.resize(static_cast<size_t>(w) * static_cast<size_t>(h) * 2);
+    const uint16_t* d = frame.depthMm.data();
+    for (int i = 0; i < w * h; ++i) {
+      const uint16_t raw = kinect::mmToRaw(d[i]);
+      _buf[2 * static_cast<size_t>(i)] = static_cast<uint8_t>(raw & 0xFF);
+      _buf[2 * static_cast<size_t>(i) + 1] = static_cast<uint8_t>(raw >> 8);
+    }
+    const int hl = std::snprintf(header, sizeof header, "P5 %d %d 65535\n", w, h);
+    std::snprintf(file, sizeof file, "d-%.6f-%u.pgm", seconds, ts);
+    std::snprintf(path, sizeof path, "%s/%s", _dir.c_str(), file);
+    if (!rec::writeFile2(path, header, static_cast<size_t>(hl), _buf.data(), _buf.size(), err,
+                         errLen))
+      return false;
+    std::fprintf(_index, "%s\n", file);
+  }
+  const int hl = std::snprintf(header, sizeof header, "P6 %d %d 255\n", w, h);
+  std::snprintf(file, sizeof file, "r-%.6f-%u.ppm", seconds, ts);
+  std::snprintf(path, sizeof path, "%s/%s", _dir.c_str(), file);
+  if (!rec::writeFile2(path, header, static_cast<size_t>(hl), frame.rgb.data(),
+                       static_cast<size_t>(w) * static_cast<size_t>(h) * 3, err, errLen))
+    return false;
+  std::fprintf(_index, "%s\n", file);
+
+  if (frame.hasGroundTruth) {
+    if (!_gtOpen) {
+      if (_count > 0) {
+        std::snprintf(err, errLen, "%s: ground truth starts at frame %d, not 0", _dir.c_str(),
+                      _count);
+        return false;
+      }
+      const std::string gtPath = _dir + "/groundtruth.txt";
+      if (!_gt.open(gtPath.c_str(), GtFormat::Bobot, _name.c_str(), err, errLen)) return false;
+      _gtOpen = true;
+    }
+    _gt.write(frame.groundTruth, w, h);
+  }
+  ++_count;
+  return true;
+}
+
+bool FakenectWriter::close(char* err, size_t errLen) {
+  bool ok = true;
+  if (_index && std::fclose(_index) != 0) {
+    std::snprintf(err, errLen, "%s/INDEX.txt: write failed", _dir.c_str());
+    ok = false;
+  }
+  _index = nullptr;
+  if (_gtOpen && !_gt.close()) {
+    std::snprintf(err, errLen, "%s/groundtruth.txt: write failed", _dir.c_str());
+    ok = false;
+  }
+  _gtOpen = false;
+  return ok;
+}
+
+}  // namespace cuetrack
