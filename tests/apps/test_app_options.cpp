@@ -9,10 +9,11 @@ using namespace cuetrack::app;
 
 namespace {
 ParseResult parse(std::initializer_list<const char*> args, AppOptions* o, std::string* err) {
-  static char storage[16][64];
-  static char* argv[17];
+  static char storage[32][64];
+  static char* argv[33];
   int argc = 0;
   argv[argc++] = const_cast<char*>("cuetrack");
+  REQUIRE(args.size() < 32);
   for (const char* a : args) {
     std::snprintf(storage[argc], sizeof storage[0], "%s", a);
     argv[argc] = storage[argc];
