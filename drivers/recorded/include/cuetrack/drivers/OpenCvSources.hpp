@@ -1,0 +1,110 @@
+// OpenCV-backed readers and writers (host only; library cuetrack_recorded_cv, built
+// when CUETRACK_WITH_OPENCV). No OpenCV type appears here: decoders live in the .cpp.
+//
+//   BobotVideoReader  NAME.avi + NAME.gt.txt (or SourceOptions::gtPath); frame N <-> GT N
+//   RgbdFolderReader  rgb/*.png, depth/*.png (16-bit mm), groundtruth.txt (BoBoT),
+//                     intrinsics.txt ("fx fy cx cy"); images paired by sorted file name
+//   OtbFolderReader   img/0001.jpg ..., groundtruth_rect.txt (x,y,w,h 1-based px)
+//   RgbdFolderWriter  writes the RGB-D folder layout (rgb/000000.png ...)
+// OpenCV's decoders allocate inside OpenCV; the readers reuse their cv::Mat buffers.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cuetrack/drivers/FrameSource.hpp"
+#include "cuetrack/drivers/GroundTruth.hpp"
+#include "cuetrack/drivers/SourceOptions.hpp"
+
+namespace cuetrack {
+
+struct CvImages;  // cv::Mat buffers, defined in the .cpp
+
+class BobotVideoReader final : public FrameSource {
+ public:
+  BobotVideoReader();
+  ~BobotVideoReader() override;
+  bool open(const char* aviPath, const SourceOptions& opt = {});
+  ReadStatus next(FrameSlot& out) override;
+  const char* error() const override { return _error; }
+  const char* name() const override { return _name.c_str(); }
+  int frameCount() const override { return _frameCount; }
+  int skippedFrames() const override { return _skipped; }
+  const GroundTruth& groundTruth() const { return _gt; }
+
+ private:
+  struct Video;
+  std::unique_ptr<Video> _video;
+  std::unique_ptr<CvImages> _img;
+  std::string _path, _name;
+  GroundTruth _gt;
+  SourceOptions _opt{};
+  int _frameCount = -1;
+  int _next = 0;
+  int _skipped = 0;
+  double _fps = 25.0;
+  char _error[512] = "";
+};
+
+// Common base of the two image-folder readers.
+class ImageFolderReader : public FrameSource {
+ public:
+  ImageFolderReader();
+  ~ImageFolderReader() override;
+  ReadStatus next(FrameSlot& out) override;
+  const char* error() const override { return _error; }
+  const char* name() const override { return _name.c_str(); }
+  int frameCount() const override { return static_cast<int>(_rgbFiles.size()); }
+  int skippedFrames() const override { return _skipped; }
+
+ protected:
+  bool finishOpen(const char* gtPath, GtFormat format, bool gtRequired);
+  std::string _dir, _name;
+  std::vector<std::string> _rgbFiles, _depthFiles;  // full paths; depth empty: none
+  CameraIntrinsics _intrinsics{};
+  bool _haveIntrinsics = false;
+  GroundTruth _gt;
+  SourceOptions _opt{};
+  double _fps = 30.0;
+  int _next = 0;
+  int _emitted = 0;
+  int _skipped = 0;
+  std::unique_ptr<CvImages> _img;
+  char _error[768] = "";
+};
+
+class RgbdFolderReader final : public ImageFolderReader {
+ public:
+  bool open(const char* dir, const SourceOptions& opt = {});
+};
+
+class OtbFolderReader final : public ImageFolderReader {
+ public:
+  bool open(const char* dir, const SourceOptions& opt = {});
+};
+
+class RgbdFolderWriter {
+ public:
+  RgbdFolderWriter() = default;
+  bool open(const char* dir, const char* sequenceName, char* err, size_t errLen);
+  bool write(const FrameSlot& frame, char* err, size_t errLen);
+  bool close(char* err, size_t errLen);
+  int framesWritten() const { return _count; }
+
+ private:
+  std::string _dir, _name;
+  GtWriter _gt;
+  bool _gtOpen = false;
+  bool _wroteIntrinsics = false;
+  int _count = 0;
+};
+
+// Stills: 16-bit PNG depth (as stored; the caller scales, e.g. TUM's value / 5 = mm)
+// and any colour image OpenCV reads. Sizes up to kMaxImageWidth x kMaxImageHeight.
+bool loadDepthPng16(const char* path, FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight>& out,
+                    char* err, size_t errLen);
+bool loadColourImage(const char* path, FixedImage<Rgb8, kMaxImageWidth, kMaxImageHeight>& out,
+                     char* err, size_t errLen);
+
+}  // namespace cuetrack

@@ -1,0 +1,145 @@
+#include "cuetrack/drivers/OpenSource.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "cuetrack/drivers/FakenectReader.hpp"
+#include "cuetrack/drivers/FileBuffer.hpp"
+#include "cuetrack/drivers/SyntheticSource.hpp"
+#if CUETRACK_HAVE_OPENCV
+#include "cuetrack/drivers/OpenCvSources.hpp"
+#endif
+
+namespace cuetrack {
+
+namespace {
+
+bool endsWith(const std::string& s, const char* suffix) {
+  const size_t n = std::strlen(suffix);
+  if (s.size() < n) return false;
+  for (size_t i = 0; i < n; ++i)
+    if (std::tolower(static_cast<unsigned char>(s[s.size() - n + i])) != suffix[i]) return false;
+  return true;
+}
+
+std::unique_ptr<FrameSource> openSynth(const std::string& spec, const SourceOptions& opt, char* err,
+                                       size_t errLen) {
+  // synth:<scene>[:frames]
+  std::string rest = spec.substr(6);
+  std::string scene = rest;
+  int frames = -1;
+  const size_t colon = rest.find(':');
+  if (colon != std::string::npos) {
+    scene = rest.substr(0, colon);
+    const std::string n = rest.substr(colon + 1);
+    char* end = nullptr;
+    const long v = std::strtol(n.c_str(), &end, 10);
+    if (n.empty() || *end != '\0' || v < 1 || v > 1000000) {
+      std::snprintf(err, errLen, "%s: frame count '%s' is not a number in 1..1000000", spec.c_str(),
+                    n.c_str());
+      return nullptr;
+    }
+    frames = static_cast<int>(v);
+  }
+  SceneSpec s;
+  if (!makeScene(scene.c_str(), &s)) {
+    std::string names;
+    for (int i = 0; i < sceneCount(); ++i) names += std::string(i ? ", " : "") + sceneName(i);
+    std::snprintf(err, errLen, "%s: unknown scene '%s' (scenes: %s)", spec.c_str(), scene.c_str(),
+                  names.c_str());
+    return nullptr;
+  }
+  if (frames > 0) s.frameCount = frames;
+  if (opt.maxFrames >= 0 && opt.maxFrames < s.frameCount) s.frameCount = opt.maxFrames;
+  auto src = std::make_unique<SyntheticSource>(s, opt.seed);
+  if (src->error()[0]) {
+    std::snprintf(err, errLen, "%s", src->error());
+    return nullptr;
+  }
+  return src;
+}
+
+template <typename Reader>
+std::unique_ptr<FrameSource> openWith(const char* path, const SourceOptions& opt, char* err,
+                                      size_t errLen) {
+  auto r = std::make_unique<Reader>();
+  if (!r->open(path, opt)) {
+    std::snprintf(err, errLen, "%s", r->error());
+    return nullptr;
+  }
+  return r;
+}
+
+[[maybe_unused]] std::unique_ptr<FrameSource> needsOpenCv(const char* path, const char* format,
+                                                          char* err, size_t errLen) {
+  std::snprintf(err, errLen, "%s: %s needs a host build with OpenCV (this build has none)", path,
+                format);
+  return nullptr;
+}
+
+}  // namespace
+
+bool frameSourcesHaveOpenCv() {
+#if CUETRACK_HAVE_OPENCV
+  return true;
+#else
+  return false;
+#endif
+}
+
+const char* frameSourceHelp() {
+  return "  synth:<scene>[:frames]   synthetic RGB-D scene (moving, twin-crossing, occlusion,\n"
+         "                           untextured, lighting, approach, box)\n"
+         "  <dir>/ with INDEX.txt    fakenect recording (+ groundtruth.txt, BoBoT format)\n"
+         "  <dir>/ with rgb/ depth/  RGB-D folder (+ groundtruth.txt, intrinsics.txt)  [OpenCV]\n"
+         "  <dir>/ with img/         OTB folder (+ groundtruth_rect.txt)                [OpenCV]\n"
+         "  <file>.avi               BoBoT video (+ <file>.gt.txt)                      [OpenCV]\n";
+}
+
+std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptions& opt, char* err,
+                                             size_t errLen) {
+  if (!spec || !*spec) {
+    std::snprintf(err, errLen, "no frame source given");
+    return nullptr;
+  }
+  const std::string s = spec;
+  if (s.rfind("synth:", 0) == 0) return openSynth(s, opt, err, errLen);
+  if (rec::isDirectory(spec)) {
+    if (rec::isFile((s + "/INDEX.txt").c_str()))
+      return openWith<FakenectReader>(spec, opt, err, errLen);
+    const bool rgbd =
+        rec::isDirectory((s + "/rgb").c_str()) && rec::isDirectory((s + "/depth").c_str());
+    const bool otb = rec::isDirectory((s + "/img").c_str());
+#if CUETRACK_HAVE_OPENCV
+    if (rgbd) return openWith<RgbdFolderReader>(spec, opt, err, errLen);
+    if (otb) return openWith<OtbFolderReader>(spec, opt, err, errLen);
+#else
+    if (rgbd) return needsOpenCv(spec, "an RGB-D folder (PNG)", err, errLen);
+    if (otb) return needsOpenCv(spec, "an OTB folder (JPEG)", err, errLen);
+#endif
+    std::snprintf(err, errLen, "%s: not a recording (no INDEX.txt, rgb/ + depth/, or img/ inside)",
+                  spec);
+    return nullptr;
+  }
+  if (endsWith(s, ".avi")) {
+    if (!rec::isFile(spec)) {
+      std::snprintf(err, errLen, "%s: no such file", spec);
+      return nullptr;
+    }
+#if CUETRACK_HAVE_OPENCV
+    return openWith<BobotVideoReader>(spec, opt, err, errLen);
+#else
+    return needsOpenCv(spec, "a video", err, errLen);
+#endif
+  }
+  if (!rec::isFile(spec))
+    std::snprintf(err, errLen, "%s: no such file or folder", spec);
+  else
+    std::snprintf(err, errLen, "%s: unknown format (expected .avi, a recording folder or synth:)",
+                  spec);
+  return nullptr;
+}
+
+}  // namespace cuetrack

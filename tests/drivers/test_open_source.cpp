@@ -1,0 +1,76 @@
+// openFrameSource(): format detection and its one-line errors.
+#include <catch2/catch.hpp>
+
+#include <memory>
+#include <string>
+
+#include "TempDir.hpp"
+#include "cuetrack/drivers/FakenectReader.hpp"
+#include "cuetrack/drivers/OpenSource.hpp"
+#include "cuetrack/drivers/SyntheticSource.hpp"
+
+using namespace cuetrack;
+using cuetrack::test::TempDir;
+
+TEST_CASE("openFrameSource opens synth and fakenect specs", "[open]") {
+  char err[512] = "";
+  SourceOptions opt;
+  auto f = std::make_unique<FrameSlot>();
+  auto s = openFrameSource("synth:occlusion:4", opt, err, sizeof err);
+  REQUIRE(s);
+  CHECK(s->frameCount() == 4);
+  CHECK(std::string(s->name()) == "occlusion");
+  opt.maxFrames = 2;
+  s = openFrameSource("synth:moving", opt, err, sizeof err);
+  REQUIRE(s);
+  int n = 0;
+  while (s->next(*f) == ReadStatus::Ok) ++n;
+  CHECK(n == 2);
+
+  TempDir tmp;
+  {
+    SceneSpec spec;
+    REQUIRE(makeScene("moving", &spec));
+    spec.frameCount = 3;
+    auto src = std::make_unique<SyntheticSource>(spec, 1);
+    FakenectWriter w;
+    REQUIRE(w.open((tmp / "rec").c_str(), "moving", err, sizeof err));
+    while (src->next(*f) == ReadStatus::Ok) REQUIRE(w.write(*f, err, sizeof err));
+    REQUIRE(w.close(err, sizeof err));
+  }
+  s = openFrameSource((tmp / "rec").c_str(), SourceOptions{}, err, sizeof err);
+  REQUIRE(s);
+  CHECK(s->frameCount() == 3);
+}
+
+TEST_CASE("openFrameSource errors are one line naming the spec", "[open][bad]") {
+  char err[512] = "";
+  TempDir tmp;
+  struct Case {
+    std::string spec, expect;
+  };
+  const Case cases[] = {
+      {"synth:nope", "unknown scene 'nope'"},
+      {"synth:moving:0", "is not a number"},
+      {"synth:moving:x", "is not a number"},
+      {tmp / "absent", "no such file or folder"},
+      {tmp.path(), "not a recording"},
+      {tmp / "x.avi", "no such file"},
+      {"", "no frame source"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.spec);
+    CHECK_FALSE(openFrameSource(c.spec.c_str(), SourceOptions{}, err, sizeof err));
+    const std::string e = err;
+    CHECK(e.find(c.expect) != std::string::npos);
+    CHECK(e.find('\n') == std::string::npos);
+  }
+  test::writeText(tmp / "notes.txt", "hello");
+  CHECK_FALSE(openFrameSource((tmp / "notes.txt").c_str(), SourceOptions{}, err, sizeof err));
+  CHECK(std::string(err).find("unknown format") != std::string::npos);
+  if (!frameSourcesHaveOpenCv()) {
+    test::writeText(tmp / "v.avi", "x");
+    CHECK_FALSE(openFrameSource((tmp / "v.avi").c_str(), SourceOptions{}, err, sizeof err));
+    CHECK(std::string(err).find("needs a host build with OpenCV") != std::string::npos);
+  }
+}

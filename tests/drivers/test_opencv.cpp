@@ -1,0 +1,326 @@
+// OpenCV-backed formats: RGB-D folder and OTB round trips from synthetic scenes, BoBoT
+// video (self-made and the real benchmark files), TUM stills, and bad input.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+#include <string>
+
+#include "SharedData.hpp"
+#include "TempDir.hpp"
+#include "cuetrack/drivers/FileBuffer.hpp"
+#include "cuetrack/drivers/OpenCvSources.hpp"
+#include "cuetrack/drivers/SyntheticSource.hpp"
+
+using namespace cuetrack;
+using cuetrack::test::TempDir;
+
+namespace {
+
+std::unique_ptr<SyntheticSource> synth(const char* scene, int frames) {
+  SceneSpec spec;
+  REQUIRE(makeScene(scene, &spec));
+  spec.frameCount = frames;
+  return std::make_unique<SyntheticSource>(spec, 11);
+}
+
+void writeRgbd(const std::string& dir, const char* scene, int frames) {
+  auto src = synth(scene, frames);
+  auto slot = std::make_unique<FrameSlot>();
+  RgbdFolderWriter w;
+  char err[256] = "";
+  REQUIRE(w.open(dir.c_str(), scene, err, sizeof err));
+  while (src->next(*slot) == ReadStatus::Ok) REQUIRE(w.write(*slot, err, sizeof err));
+  REQUIRE(w.close(err, sizeof err));
+}
+
+void checkBox(const Box& a, const Box& b, float tol) {
+  CHECK(a.empty() == b.empty());
+  CHECK(a.x == Approx(b.x).margin(tol));
+  CHECK(a.y == Approx(b.y).margin(tol));
+  CHECK(a.w == Approx(b.w).margin(tol));
+  CHECK(a.h == Approx(b.h).margin(tol));
+}
+
+}  // namespace
+
+TEST_CASE("synthetic -> RGB-D folder -> reader is lossless", "[opencv][rgbd]") {
+  TempDir tmp;
+  const std::string dir = tmp / "seq";
+  writeRgbd(dir, "twin-crossing", 5);
+  CHECK(test::pathExists(dir + "/rgb/000004.png"));
+  CHECK(test::pathExists(dir + "/depth/000004.png"));
+  CHECK(test::readText(dir + "/groundtruth.txt").rfind("twin-crossing\r\n0 ", 0) == 0);
+
+  RgbdFolderReader reader;
+  REQUIRE(reader.open(dir.c_str()));
+  CHECK(reader.frameCount() == 5);
+  CHECK(std::string(reader.name()) == "seq");
+  auto src = synth("twin-crossing", 5);
+  auto want = std::make_unique<FrameSlot>(), got = std::make_unique<FrameSlot>();
+  int n = 0;
+  while (reader.next(*got) == ReadStatus::Ok) {
+    REQUIRE(src->next(*want) == ReadStatus::Ok);
+    CHECK(got->index == n);
+    CHECK(std::memcmp(got->rgb.data(), want->rgb.data(), 640 * 480 * 3) == 0);
+    REQUIRE(got->hasDepth);
+    CHECK(std::memcmp(got->depthMm.data(), want->depthMm.data(), 640 * 480 * 2) == 0);
+    CHECK(got->hasGroundTruth);
+    checkBox(got->groundTruth, want->groundTruth, 1e-3f);
+    CHECK(got->intrinsics.fx == Approx(want->intrinsics.fx).margin(1e-3));
+    CHECK(got->intrinsics.cy == Approx(want->intrinsics.cy).margin(1e-3));
+    CHECK(got->timeUs == want->timeUs);
+    ++n;
+  }
+  CHECK(n == 5);
+}
+
+TEST_CASE("RGB-D folder bad input", "[opencv][rgbd][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "seq";
+  writeRgbd(dir, "moving", 3);
+  auto f = std::make_unique<FrameSlot>();
+
+  SECTION("truncated colour PNG names the file; skipping counts it") {
+    const std::string p = dir + "/rgb/000001.png";
+    test::writeText(p, test::readText(p).substr(0, 200));
+    RgbdFolderReader reader;
+    REQUIRE(reader.open(dir.c_str()));
+    REQUIRE(reader.next(*f) == ReadStatus::Ok);
+    CHECK(reader.next(*f) == ReadStatus::Error);
+    const std::string e = reader.error();
+    CHECK(e.find("rgb/000001.png") != std::string::npos);
+    CHECK(e.find('\n') == std::string::npos);
+    SourceOptions skip;
+    skip.skipBadFrames = true;
+    RgbdFolderReader skipping;
+    REQUIRE(skipping.open(dir.c_str(), skip));
+    int n = 0;
+    while (skipping.next(*f) == ReadStatus::Ok) ++n;
+    CHECK(n == 2);
+    CHECK(skipping.skippedFrames() == 1);
+  }
+  SECTION("corrupt depth (8-bit) names the file") {
+    cv::imwrite(dir + "/depth/000000.png", cv::Mat(480, 640, CV_8UC1, cv::Scalar(9)));
+    RgbdFolderReader reader;
+    REQUIRE(reader.open(dir.c_str()));
+    CHECK(reader.next(*f) == ReadStatus::Error);
+    CHECK(std::string(reader.error()).find("depth/000000.png: depth must be a 16-bit") !=
+          std::string::npos);
+  }
+  SECTION("missing depth file") {
+    std::remove((dir + "/depth/000002.png").c_str());
+    RgbdFolderReader reader;
+    CHECK_FALSE(reader.open(dir.c_str()));
+    CHECK(std::string(reader.error()).find("depth: 2 depth images for 3 colour images") !=
+          std::string::npos);
+  }
+  SECTION("ground-truth count mismatch") {
+    test::writeText(dir + "/groundtruth.txt", "seq\n0 0.1 0.1 0.1 0.1\n");
+    RgbdFolderReader reader;
+    CHECK_FALSE(reader.open(dir.c_str()));
+    CHECK(std::string(reader.error()).find("groundtruth.txt: 1 ground-truth boxes for 3 frames") !=
+          std::string::npos);
+  }
+  SECTION("unparsable intrinsics") {
+    test::writeText(dir + "/intrinsics.txt", "518 x 3 4\n");
+    RgbdFolderReader reader;
+    CHECK_FALSE(reader.open(dir.c_str()));
+    CHECK(std::string(reader.error()).find("intrinsics.txt:") != std::string::npos);
+  }
+  SECTION("ground truth override path") {
+    test::writeText(tmp / "other.txt", "hdr\n0 0.5 0.5 0.25 0.25\n1 0 0 0 0\n2 0 0 0 0\n");
+    SourceOptions opt;
+    const std::string other = tmp / "other.txt";
+    opt.gtPath = other.c_str();
+    RgbdFolderReader reader;
+    REQUIRE(reader.open(dir.c_str(), opt));
+    REQUIRE(reader.next(*f) == ReadStatus::Ok);
+    checkBox(f->groundTruth, Box{320, 240, 160, 120}, 1e-3f);
+  }
+}
+
+TEST_CASE("OTB folder: JPEG frames and 1-based boxes", "[opencv][otb]") {
+  TempDir tmp;
+  const std::string dir = tmp / "Otb";
+  char err[256] = "";
+  REQUIRE(rec::makeDirectories((dir + "/img").c_str(), err, sizeof err));
+  auto src = synth("box", 4);
+  auto slot = std::make_unique<FrameSlot>();
+  GtWriter gt;
+  REQUIRE(
+      gt.open((dir + "/groundtruth_rect.txt").c_str(), GtFormat::Otb, nullptr, err, sizeof err));
+  std::vector<Box> boxes;
+  std::vector<std::vector<uint8_t>> pixels;
+  for (int i = 0; i < 4; ++i) {
+    REQUIRE(src->next(*slot) == ReadStatus::Ok);
+    cv::Mat rgb(480, 640, CV_8UC3, slot->rgb.data()), bgr;
+    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+    char name[64];
+    std::snprintf(name, sizeof name, "/img/%04d.jpg", i + 1);
+    REQUIRE(cv::imwrite(dir + name, bgr, {cv::IMWRITE_JPEG_QUALITY, 95}));
+    gt.write(slot->groundTruth, 640, 480);
+    boxes.push_back(slot->groundTruth);
+    const uint8_t* p = reinterpret_cast<const uint8_t*>(slot->rgb.data());
+    pixels.emplace_back(p, p + 640 * 480 * 3);
+  }
+  REQUIRE(gt.close());
+  OtbFolderReader reader;
+  REQUIRE(reader.open(dir.c_str()));
+  CHECK(reader.frameCount() == 4);
+  auto f = std::make_unique<FrameSlot>();
+  for (int i = 0; i < 4; ++i) {
+    REQUIRE(reader.next(*f) == ReadStatus::Ok);
+    CHECK_FALSE(f->hasDepth);
+    checkBox(f->groundTruth, boxes[static_cast<size_t>(i)], 1e-3f);
+    double diff = 0;
+    const uint8_t* p = reinterpret_cast<const uint8_t*>(f->rgb.data());
+    for (size_t k = 0; k < pixels[0].size(); ++k)
+      diff += std::abs(p[k] - pixels[static_cast<size_t>(i)][k]);
+    CHECK(diff / pixels[0].size() < 4.0);  // JPEG at quality 95
+  }
+  CHECK(reader.next(*f) == ReadStatus::End);
+  // Comma-free, tab-separated boxes read the same.
+  test::writeText(dir + "/groundtruth_rect.txt", "1\t1\t10\t10\n1 1 10 10\n1 1 10 10\n1 1 10 10\n");
+  OtbFolderReader tabs;
+  REQUIRE(tabs.open(dir.c_str()));
+  REQUIRE(tabs.next(*f) == ReadStatus::Ok);
+  checkBox(f->groundTruth, Box{0, 0, 10, 10}, 1e-4f);
+}
+
+TEST_CASE("BoBoT video reader: own video, unreadable video", "[opencv][bobot]") {
+  TempDir tmp;
+  const std::string avi = tmp / "Vid_T_test.avi";
+  {
+    cv::VideoWriter vw(avi, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0, cv::Size(320, 240));
+    if (!vw.isOpened()) {
+      WARN("this OpenCV cannot write MJPG AVI: skipped");
+      return;
+    }
+    for (int i = 0; i < 6; ++i) vw.write(cv::Mat(240, 320, CV_8UC3, cv::Scalar(i * 40, 0, 0)));
+  }
+  test::writeText(tmp / "Vid_T_test.gt.txt",
+                  "./Vid_T_test.avi\r\n0 0.5 0.5 0.25 0.25\r\n1 0 0 0 0\r\n2 0.1 0.1 0.1 0.1\r\n"
+                  "3 0.1 0.1 0.1 0.1\r\n4 0.1 0.1 0.1 0.1\r\n");
+  BobotVideoReader reader;
+  REQUIRE(reader.open(avi.c_str()));
+  CHECK(reader.frameCount() == 6);
+  CHECK(reader.groundTruth().header() == "./Vid_T_test.avi");
+  auto f = std::make_unique<FrameSlot>();
+  int n = 0;
+  while (reader.next(*f) == ReadStatus::Ok) {
+    CHECK(f->rgb.width() == 320);
+    CHECK(f->hasGroundTruth == (n < 5));
+    CHECK(f->timeUs == static_cast<uint64_t>(n * 40000));
+    if (n == 0) checkBox(f->groundTruth, Box{160, 120, 80, 60}, 1e-3f);
+    if (n == 1) CHECK(f->groundTruth.empty());
+    ++n;
+  }
+  CHECK(n == 6);
+
+  SECTION("garbage video") {
+    const std::string bad = tmp / "bad.avi";
+    test::writeText(bad, std::string(5000, 'x'));
+    BobotVideoReader r;
+    CHECK_FALSE(r.open(bad.c_str()));
+    CHECK(std::string(r.error()).find("bad.avi: cannot open video") != std::string::npos);
+  }
+  SECTION("missing video") {
+    BobotVideoReader r;
+    CHECK_FALSE(r.open((tmp / "none.avi").c_str()));
+    CHECK(std::string(r.error()).find("none.avi: no such video file") != std::string::npos);
+  }
+  SECTION("GT count mismatch") {
+    test::writeText(tmp / "Vid_T_test.gt.txt", "h\r\n0 0.5 0.5 0.25 0.25\r\n");
+    BobotVideoReader r;
+    CHECK_FALSE(r.open(avi.c_str()));
+    CHECK(std::string(r.error()).find("1 ground-truth boxes for 6 video frames") !=
+          std::string::npos);
+  }
+}
+
+TEST_CASE("real BoBoT sequences: frame counts and ground-truth alignment", "[opencv][shared]") {
+  const std::string dir = test::sharedDataDir() + "/bobot";
+  if (!test::pathExists(dir)) {
+    WARN("shared data absent (" << dir << "): skipped");
+    return;
+  }
+  struct Seq {
+    const char* name;
+    int frames;
+  };
+  auto f = std::make_unique<FrameSlot>();
+  for (Seq s : {Seq{"Vid_C_juice", 405}, Seq{"Vid_E_person_partially_occluded", 306},
+                Seq{"Vid_H_panda", 413}}) {
+    INFO(s.name);
+    const std::string avi = dir + "/" + s.name + ".avi";
+    BobotVideoReader reader;
+    REQUIRE(reader.open(avi.c_str()));
+    CHECK(reader.groundTruth().count() == s.frames - 1);
+    CHECK(reader.groundTruth().header() == std::string("./") + s.name + ".avi");
+    int n = 0, withGt = 0, visible = 0;
+    while (reader.next(*f) == ReadStatus::Ok) {
+      REQUIRE(f->rgb.width() == 320);
+      REQUIRE(f->rgb.height() == 240);
+      CHECK(f->index == n);
+      // Frame N <-> GT index N; only the last frame has none.
+      CHECK(f->hasGroundTruth == (n < s.frames - 1));
+      withGt += f->hasGroundTruth;
+      if (!f->groundTruth.empty()) {
+        ++visible;
+        CHECK(f->groundTruth.x >= -1.f);
+        CHECK(f->groundTruth.x + f->groundTruth.w <= 321.f);
+        CHECK(f->groundTruth.y + f->groundTruth.h <= 241.f);
+      }
+      ++n;
+    }
+    CHECK(std::string(reader.error()).empty());
+    CHECK(n == s.frames);
+    CHECK(withGt == s.frames - 1);
+    CHECK(visible > s.frames / 2);
+  }
+  // Alignment against the file itself: juice frame 0 is GT line 2 of the file.
+  BobotVideoReader juice;
+  REQUIRE(juice.open((dir + "/Vid_C_juice.avi").c_str()));
+  REQUIRE(juice.next(*f) == ReadStatus::Ok);
+  checkBox(f->groundTruth, Box{0.410029f * 320, 0.208388f * 240, 0.114061f * 320, 0.373526f * 240},
+           1e-3f);
+}
+
+TEST_CASE("real TUM stills: 16-bit PNG depth (value / 5 = mm)", "[opencv][shared][stills]") {
+  const std::string dir = test::sharedDataDir() + "/kinect-stills/tum-fr1";
+  if (!test::pathExists(dir)) {
+    WARN("shared data absent (" << dir << "): skipped");
+    return;
+  }
+  auto depth = std::make_unique<FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight>>();
+  auto colour = std::make_unique<FixedImage<Rgb8, kMaxImageWidth, kMaxImageHeight>>();
+  char err[256] = "";
+  for (int i = 1; i <= 2; ++i) {
+    const std::string d = dir + "/" + std::to_string(i) + "_depth.png";
+    const std::string c = dir + "/" + std::to_string(i) + ".png";
+    INFO(d);
+    REQUIRE(loadDepthPng16(d.c_str(), *depth, err, sizeof err));
+    REQUIRE(loadColourImage(c.c_str(), *colour, err, sizeof err));
+    CHECK(depth->width() == 640);
+    CHECK(depth->height() == 480);
+    CHECK(colour->width() == depth->width());
+    std::vector<int> mm;
+    for (int k = 0; k < 640 * 480; ++k)
+      if (depth->data()[k]) mm.push_back(depth->data()[k] / 5);
+    REQUIRE(mm.size() > 640 * 480 / 2);
+    std::sort(mm.begin(), mm.end());
+    CHECK(mm.front() >= 400);
+    CHECK(mm.back() <= 12000);  // TUM keeps readings a little past 10 m
+    CHECK(mm[mm.size() / 2] > 500);
+    CHECK(mm[mm.size() / 2] < 6000);
+  }
+  CHECK_FALSE(loadDepthPng16((dir + "/1.png").c_str(), *depth, err, sizeof err));  // 8-bit colour
+  CHECK(std::string(err).find("1.png: not a 16-bit") != std::string::npos);
+}
