@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "Process.hpp"
+#include "cuetrack/drivers/FakenectReader.hpp"
+#include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
 #include "cuetrack_proto.h"
 
@@ -362,4 +364,43 @@ TEST_CASE("when the serial peer goes away the app reports it, keeps tracking, re
   REQUIRE(app.wait(30000, &status));
   INFO(slurp(appErr));
   CHECK(status == 0);
+}
+
+TEST_CASE("cuetrack runs on a fakenect recording and takes the target from its ground truth") {
+  TempDir tmp;
+  const std::string rec = tmp.file("rec");
+  {
+    SceneSpec spec;
+    REQUIRE(makeScene("moving", &spec));
+    spec.frameCount = 8;
+    static SyntheticSource synth(spec, 5);
+    static FrameSlot slot;
+    FakenectWriter writer;
+    char err[512] = "";
+    REQUIRE(writer.open(rec.c_str(), "moving", err, sizeof err));
+    while (synth.next(slot) == ReadStatus::Ok) REQUIRE(writer.write(slot, err, sizeof err));
+    REQUIRE(writer.close(err, sizeof err));
+  }
+  const std::string csv = tmp.file("out.csv"), appErr = tmp.file("app.err");
+  ChildProcess app;
+  const char* argv[] = {CUETRACK_APP_BIN, "--source", rec.c_str(), "--out",
+                        csv.c_str(),      "--quiet",  nullptr};
+  REQUIRE(app.start(argv, nullptr, appErr.c_str()));
+  int status = -1;
+  REQUIRE(app.wait(kAppTimeoutMs, &status));
+  INFO(slurp(appErr));
+  REQUIRE(status == 0);
+  const std::vector<std::string> rows = lines(slurp(csv));
+  REQUIRE(rows.size() == 9);  // header + every recorded frame
+  CHECK(rows[1].find(",tracking,") != std::string::npos);
+  CHECK(rows[8].find(",idle,") == std::string::npos);
+
+  // A broken path gives one line naming it and exit code 2.
+  ChildProcess bad;
+  const std::string missing = tmp.file("nothing-here");
+  const char* bargv[] = {CUETRACK_APP_BIN, "--source", missing.c_str(), "--quiet", nullptr};
+  REQUIRE(bad.start(bargv, nullptr, appErr.c_str()));
+  REQUIRE(bad.wait(30000, &status));
+  CHECK(status == 2);
+  CHECK(slurp(appErr).find(missing) != std::string::npos);
 }

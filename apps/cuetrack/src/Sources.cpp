@@ -2,15 +2,14 @@
 
 #include <cstdio>
 #include <cstring>
+#include <memory>
 
 #include "Options.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #if defined(CUETRACK_HAVE_KINECT)
 #include "cuetrack/drivers/KinectSource.hpp"
 #endif
-#if defined(CUETRACK_HAVE_OPEN_SOURCE)
 #include "cuetrack/drivers/OpenSource.hpp"
-#endif
 
 namespace cuetrack::app {
 namespace {
@@ -66,14 +65,17 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
 #endif
   }
   if (std::strcmp(spec, "synth") == 0) return openSynth(kDefaultScene, seed, frames, err, errLen);
-  if (std::strncmp(spec, "synth:", 6) == 0) return openSynth(spec + 6, seed, frames, err, errLen);
-#if defined(CUETRACK_HAVE_OPEN_SOURCE)
-  return openRecordedSource(spec, err, errLen);
-#else
-  std::snprintf(err, errLen,
-                "%s: recordings are not supported by this build (no recorded-frames reader)", spec);
-  return nullptr;
-#endif
+  // synth:SCENE here (runs for --frames); synth:SCENE:N goes to the shared factory below.
+  if (std::strncmp(spec, "synth:", 6) == 0 && !std::strchr(spec + 6, ':')) {
+    return openSynth(spec + 6, seed, frames, err, errLen);
+  }
+  // Recordings: the project's one factory. Board builds have no OpenCV, so there it opens
+  // fakenect recordings only (and says so for other formats). One allocation, at start.
+  SourceOptions options;
+  options.seed = seed;
+  static std::unique_ptr<FrameSource> recorded;
+  recorded = openFrameSource(spec, options, err, errLen);
+  return recorded.get();
 }
 
 }  // namespace cuetrack::app
