@@ -367,3 +367,15 @@ TEST_CASE("lost then still lost goes out as LOST then SEARCHING") {
   CHECK(rig.sink.at(1).state == CTP_STATE_LOST);
   CHECK(rig.sink.at(2).state == CTP_STATE_SEARCHING);
 }
+
+TEST_CASE("the status line reports frames, fps, dropped frames, state and the link") {
+  PipelineOptions o;
+  o.statusPeriodUs = 1000000;
+  o.droppedFrames = [](const FrameSource&) -> uint64_t { return 7; };
+  static Rig rig(40, true, o);
+  for (int i = 0; i < 40; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  // 33333 us per frame on the fake clock: the first full second ends after frame 31.
+  REQUIRE(rig.reporter.countContaining("fps") == 1);
+  CHECK(rig.reporter.countContaining(
+            "frame 31 fps 30.0 dropped 7 state tracking | serial up sent 31 ") == 1);
+}

@@ -68,6 +68,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   po.box = opt.box;
   po.useGroundTruth = opt.useGroundTruth;
   po.statusPeriodUs = opt.quiet ? 0 : 1000000;
+  po.droppedFrames = droppedFrames;
   Pipeline pipeline(*source, slot, tracker, clock, reporter, po);
   if (opt.outPath) pipeline.addSink(&fileSink);
   if (opt.forceStdout || (!opt.outPath && !opt.serialPath)) {

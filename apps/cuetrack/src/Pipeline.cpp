@@ -175,9 +175,11 @@ void Pipeline::statusLine() {
   const double fps =
       static_cast<double>(_frames - _statusLastFrames) * 1e6 / static_cast<double>(dt);
   char line[256];
-  int n = std::snprintf(line, sizeof line, "frame %u fps %.1f dropped %d state %s",
-                        static_cast<unsigned>(_frames), fps, _source.skippedFrames(),
-                        ctp_state_name(_state));
+  const uint64_t dropped = _options.droppedFrames ? _options.droppedFrames(_source)
+                                                  : static_cast<uint64_t>(_source.skippedFrames());
+  int n = std::snprintf(line, sizeof line, "frame %u fps %.1f dropped %llu state %s",
+                        static_cast<unsigned>(_frames), fps,
+                        static_cast<unsigned long long>(dropped), ctp_state_name(_state));
   if (_link && n > 0 && static_cast<size_t>(n) < sizeof line) {
     const LinkStats& s = _link->stats();
     std::snprintf(line + n, sizeof line - static_cast<size_t>(n),

@@ -20,6 +20,8 @@ struct PipelineOptions {
   Box box{};                    // [px]
   bool useGroundTruth = true;   // else wait for --box or a serial START
   uint64_t statusPeriodUs = 0;  // status line period; 0 = no status line
+  // Frames the source lost (for the status line); nullptr: FrameSource::skippedFrames().
+  uint64_t (*droppedFrames)(const FrameSource&) = nullptr;
 };
 
 enum class StepResult : uint8_t {

@@ -78,4 +78,12 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   return recorded.get();
 }
 
+uint64_t droppedFrames(const FrameSource& source) {
+  uint64_t n = static_cast<uint64_t>(source.skippedFrames());
+#if defined(CUETRACK_HAVE_KINECT)
+  if (&source == &kinect()) n += kinect().stats().dropped;
+#endif
+  return n;
+}
+
 }  // namespace cuetrack::app

@@ -15,4 +15,8 @@ namespace cuetrack::app {
 // err on failure.
 FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen);
 
+// Frames lost so far: unreadable frames skipped, plus for the Kinect the frames it
+// dropped because the tracker was slower than the camera.
+uint64_t droppedFrames(const FrameSource& source);
+
 }  // namespace cuetrack::app
