@@ -11,6 +11,12 @@
 namespace {
 std::atomic<uint64_t> gAllocs{0};
 std::atomic<uint64_t> gFrees{0};
+// Initial-exec TLS in the executable: reading it never allocates.
+thread_local uint64_t tAllocs = 0;
+inline void countAlloc() {
+  gAllocs.fetch_add(1, std::memory_order_relaxed);
+  ++tAllocs;
+}
 }  // namespace
 
 namespace cuetrack::test {
@@ -19,6 +25,9 @@ uint64_t allocationCount() {
 }
 uint64_t deallocationCount() {
   return gFrees.load(std::memory_order_relaxed);
+}
+uint64_t threadAllocationCount() {
+  return tAllocs;
 }
 }  // namespace cuetrack::test
 
@@ -42,25 +51,25 @@ void __libc_free(void*);
 void* __libc_memalign(size_t, size_t);
 
 void* aligned_alloc(size_t a, size_t n) {
-  gAllocs.fetch_add(1, std::memory_order_relaxed);
+  countAlloc();
   return __libc_memalign(a, n);
 }
 int posix_memalign(void** out, size_t a, size_t n) {
-  gAllocs.fetch_add(1, std::memory_order_relaxed);
+  countAlloc();
   *out = __libc_memalign(a, n);
   return *out ? 0 : 12;  // ENOMEM
 }
 
 void* malloc(size_t n) {
-  gAllocs.fetch_add(1, std::memory_order_relaxed);
+  countAlloc();
   return __libc_malloc(n);
 }
 void* calloc(size_t n, size_t s) {
-  gAllocs.fetch_add(1, std::memory_order_relaxed);
+  countAlloc();
   return __libc_calloc(n, s);
 }
 void* realloc(void* p, size_t n) {
-  gAllocs.fetch_add(1, std::memory_order_relaxed);
+  countAlloc();
   return __libc_realloc(p, n);
 }
 void free(void* p) {
@@ -77,7 +86,7 @@ void* operator new(size_t n) {
 #else
 // Under ASan only operator new is counted (ASan owns malloc).
 void* operator new(size_t n) {
-  gAllocs.fetch_add(1, std::memory_order_relaxed);
+  countAlloc();
   void* p = std::malloc(n ? n : 1);
   if (!p) std::abort();
   return p;

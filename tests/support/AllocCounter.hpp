@@ -13,11 +13,23 @@ namespace cuetrack::test {
 // Totals since process start (all threads).
 uint64_t allocationCount();
 uint64_t deallocationCount();
+// Allocations made by the calling thread only (e.g. a consumer, while a library's own
+// thread allocates for itself). Same hooks as allocationCount().
+uint64_t threadAllocationCount();
 
 class AllocScope {
  public:
   AllocScope() : _start(allocationCount()) {}
   uint64_t allocations() const { return allocationCount() - _start; }
+
+ private:
+  uint64_t _start;
+};
+
+class ThreadAllocScope {
+ public:
+  ThreadAllocScope() : _start(threadAllocationCount()) {}
+  uint64_t allocations() const { return threadAllocationCount() - _start; }
 
  private:
   uint64_t _start;
