@@ -11,6 +11,7 @@
 #include "AllocCounter.hpp"
 #include "TempDir.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
+#include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 
@@ -27,10 +28,10 @@ void writeScene(const std::string& dir, const char* scene, int frames, uint64_t 
   auto src = std::make_unique<SyntheticSource>(spec, seed);
   auto slot = std::make_unique<FrameSlot>();
   FakenectWriter w;
-  char err[256] = "";
-  REQUIRE(w.open(dir.c_str(), scene, err, sizeof err));
-  while (src->next(*slot) == ReadStatus::Ok) REQUIRE(w.write(*slot, err, sizeof err));
-  REQUIRE(w.close(err, sizeof err));
+  if (!(w.open(dir.c_str(), scene))) FAIL(w.error());
+  while (src->next(*slot) == ReadStatus::Ok)
+    if (!(w.write(*slot))) FAIL(w.error());
+  if (!(w.close())) FAIL(w.error());
   CHECK(w.framesWritten() == frames);
 }
 

@@ -6,6 +6,7 @@
 
 #include "TempDir.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
+#include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/OpenSource.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 
@@ -34,9 +35,10 @@ TEST_CASE("openFrameSource opens synth and fakenect specs", "[open]") {
     spec.frameCount = 3;
     auto src = std::make_unique<SyntheticSource>(spec, 1);
     FakenectWriter w;
-    REQUIRE(w.open((tmp / "rec").c_str(), "moving", err, sizeof err));
-    while (src->next(*f) == ReadStatus::Ok) REQUIRE(w.write(*f, err, sizeof err));
-    REQUIRE(w.close(err, sizeof err));
+    if (!(w.open((tmp / "rec").c_str(), "moving"))) FAIL(w.error());
+    while (src->next(*f) == ReadStatus::Ok)
+      if (!(w.write(*f))) FAIL(w.error());
+    if (!(w.close())) FAIL(w.error());
   }
   s = openFrameSource((tmp / "rec").c_str(), SourceOptions{}, err, sizeof err);
   REQUIRE(s);

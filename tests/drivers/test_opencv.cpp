@@ -34,10 +34,10 @@ void writeRgbd(const std::string& dir, const char* scene, int frames) {
   auto src = synth(scene, frames);
   auto slot = std::make_unique<FrameSlot>();
   RgbdFolderWriter w;
-  char err[256] = "";
-  REQUIRE(w.open(dir.c_str(), scene, err, sizeof err));
-  while (src->next(*slot) == ReadStatus::Ok) REQUIRE(w.write(*slot, err, sizeof err));
-  REQUIRE(w.close(err, sizeof err));
+  if (!(w.open(dir.c_str(), scene))) FAIL(w.error());
+  while (src->next(*slot) == ReadStatus::Ok)
+    if (!(w.write(*slot))) FAIL(w.error());
+  if (!(w.close())) FAIL(w.error());
 }
 
 void checkBox(const Box& a, const Box& b, float tol) {

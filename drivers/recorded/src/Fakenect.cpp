@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "cuetrack/drivers/FakenectReader.hpp"
+#include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
 #include "cuetrack/drivers/RecordedParsers.hpp"
 
@@ -155,7 +156,12 @@ FakenectWriter::~FakenectWriter() {
   if (_index) std::fclose(_index);
 }
 
-bool FakenectWriter::open(const char* dir, const char* sequenceName, char* err, size_t errLen) {
+bool FakenectWriter::open(const char* dir, const char* sequenceName) {
+  char* err = _error;
+  const size_t errLen = sizeof _error;
+  _error[0] = '\0';
+  if (_index) std::fclose(_index);
+  _index = nullptr;
   if (!rec::makeDirectories(dir, err, errLen)) return false;
   _dir = dir;
   _name = sequenceName ? sequenceName : baseName(_dir);
@@ -167,10 +173,17 @@ bool FakenectWriter::open(const char* dir, const char* sequenceName, char* err, 
   }
   _count = 0;
   _gtOpen = false;
+  if (!_tableReady) {
+    for (int mm = 0; mm <= kMaxDepthMm; ++mm)
+      _mmToRaw[mm] = kinect::mmToRaw(static_cast<uint16_t>(mm));
+    _tableReady = true;
+  }
   return true;
 }
 
-bool FakenectWriter::write(const FrameSlot& frame, char* err, size_t errLen) {
+bool FakenectWriter::write(const FrameSlot& frame) {
+  char* err = _error;
+  const size_t errLen = sizeof _error;
   if (!_index) {
     std::snprintf(err, errLen, "%s: writer not open", _dir.c_str());
     return false;
@@ -178,7 +191,9 @@ bool FakenectWriter::write(const FrameSlot& frame, char* err, size_t errLen) {
   const int w = frame.rgb.width(), h = frame.rgb.height();
   // 1 s offset: fakenect treats a recorded time of 0 as "no previous frame".
   const double seconds = 1.0 + static_cast<double>(frame.timeUs) * 1e-6;
-  const uint32_t ts = static_cast<uint32_t>(frame.timeUs);
+  // Camera timestamp in Kinect v1 clock ticks (60 MHz, wrapping), as fakenect-record
+  // writes it: fakenect hands it to the live driver's callbacks (KinectSource).
+  const uint32_t ts = static_cast<uint32_t>(frame.timeUs * 60u);
   char file[128], path[1024], header[64];
 
   // Accelerometer: freenect_raw_tilt_state (3 x int16 accel, int8 tilt, pad, int32 status),
@@ -193,14 +208,15 @@ bool FakenectWriter::write(const FrameSlot& frame, char* err, size_t errLen) {
 
   // Depth before colour: the reader pairs a colour frame with the depth before it.
   if (frame.hasDepth) {
-    _buf.resize(static_cast<size_t>(w) * static_cast<size_t>(h) * 2);
+    const int dw = frame.depthMm.width(), dh = frame.depthMm.height();
+    _buf.resize(static_cast<size_t>(dw) * static_cast<size_t>(dh) * 2);
     const uint16_t* d = frame.depthMm.data();
-    for (int i = 0; i < w * h; ++i) {
-      const uint16_t raw = kinect::mmToRaw(d[i]);
+    for (int i = 0; i < dw * dh; ++i) {
+      const uint16_t raw = d[i] <= kMaxDepthMm ? _mmToRaw[d[i]] : kinect::kRawNoDepth;
       _buf[2 * static_cast<size_t>(i)] = static_cast<uint8_t>(raw & 0xFF);
       _buf[2 * static_cast<size_t>(i) + 1] = static_cast<uint8_t>(raw >> 8);
     }
-    const int hl = std::snprintf(header, sizeof header, "P5 %d %d 65535\n", w, h);
+    const int hl = std::snprintf(header, sizeof header, "P5 %d %d 65535\n", dw, dh);
     std::snprintf(file, sizeof file, "d-%.6f-%u.pgm", seconds, ts);
     std::snprintf(path, sizeof path, "%s/%s", _dir.c_str(), file);
     if (!rec::writeFile2(path, header, static_cast<size_t>(hl), _buf.data(), _buf.size(), err,
@@ -208,13 +224,15 @@ bool FakenectWriter::write(const FrameSlot& frame, char* err, size_t errLen) {
       return false;
     std::fprintf(_index, "%s\n", file);
   }
-  const int hl = std::snprintf(header, sizeof header, "P6 %d %d 255\n", w, h);
-  std::snprintf(file, sizeof file, "r-%.6f-%u.ppm", seconds, ts);
-  std::snprintf(path, sizeof path, "%s/%s", _dir.c_str(), file);
-  if (!rec::writeFile2(path, header, static_cast<size_t>(hl), frame.rgb.data(),
-                       static_cast<size_t>(w) * static_cast<size_t>(h) * 3, err, errLen))
-    return false;
-  std::fprintf(_index, "%s\n", file);
+  if (w > 0 && h > 0) {  // depth-only frames (a depth-only Kinect stream) have no colour
+    const int hl = std::snprintf(header, sizeof header, "P6 %d %d 255\n", w, h);
+    std::snprintf(file, sizeof file, "r-%.6f-%u.ppm", seconds, ts);
+    std::snprintf(path, sizeof path, "%s/%s", _dir.c_str(), file);
+    if (!rec::writeFile2(path, header, static_cast<size_t>(hl), frame.rgb.data(),
+                         static_cast<size_t>(w) * static_cast<size_t>(h) * 3, err, errLen))
+      return false;
+    std::fprintf(_index, "%s\n", file);
+  }
 
   if (frame.hasGroundTruth) {
     if (!_gtOpen) {
@@ -233,7 +251,9 @@ bool FakenectWriter::write(const FrameSlot& frame, char* err, size_t errLen) {
   return true;
 }
 
-bool FakenectWriter::close(char* err, size_t errLen) {
+bool FakenectWriter::close() {
+  char* err = _error;
+  const size_t errLen = sizeof _error;
   bool ok = true;
   if (_index && std::fclose(_index) != 0) {
     std::snprintf(err, errLen, "%s/INDEX.txt: write failed", _dir.c_str());

@@ -299,7 +299,10 @@ ReadStatus ImageFolderReader::next(FrameSlot& out) {
 
 // ---- RGB-D folder writer --------------------------------------------------------
 
-bool RgbdFolderWriter::open(const char* dir, const char* sequenceName, char* err, size_t errLen) {
+bool RgbdFolderWriter::open(const char* dir, const char* sequenceName) {
+  char* err = _error;
+  const size_t errLen = sizeof _error;
+  _error[0] = '\0';
   _dir = dir;
   _name = sequenceName ? sequenceName : stem(_dir + ".x");
   _count = 0;
@@ -309,7 +312,9 @@ bool RgbdFolderWriter::open(const char* dir, const char* sequenceName, char* err
          rec::makeDirectories((_dir + "/depth").c_str(), err, errLen);
 }
 
-bool RgbdFolderWriter::write(const FrameSlot& frame, char* err, size_t errLen) {
+bool RgbdFolderWriter::write(const FrameSlot& frame) {
+  char* err = _error;
+  const size_t errLen = sizeof _error;
   const int w = frame.rgb.width(), h = frame.rgb.height();
   char path[1024];
   if (!_wroteIntrinsics) {
@@ -356,7 +361,9 @@ bool RgbdFolderWriter::write(const FrameSlot& frame, char* err, size_t errLen) {
   return true;
 }
 
-bool RgbdFolderWriter::close(char* err, size_t errLen) {
+bool RgbdFolderWriter::close() {
+  char* err = _error;
+  const size_t errLen = sizeof _error;
   if (_gtOpen && !_gt.close()) {
     std::snprintf(err, errLen, "%s/groundtruth.txt: write failed", _dir.c_str());
     return false;

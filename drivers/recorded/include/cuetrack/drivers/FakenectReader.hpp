@@ -57,29 +57,4 @@ class FakenectReader final : public FrameSource {
   char _error[512] = "";
 };
 
-// Writes frames as a fakenect recording (INDEX.txt, d-/r-/a- files, groundtruth.txt
-// in BoBoT format when frames carry ground truth). Depth [mm] -> raw with
-// kinect::mmToRaw. Only 640x480 is valid for fakenect replay; other sizes are written
-// as they are (our reader takes them) and say so in warning().
-class FakenectWriter {
- public:
-  FakenectWriter() = default;
-  FakenectWriter(const FakenectWriter&) = delete;
-  FakenectWriter& operator=(const FakenectWriter&) = delete;
-  ~FakenectWriter();
-  bool open(const char* dir, const char* sequenceName, char* err, size_t errLen);
-  bool write(const FrameSlot& frame, char* err, size_t errLen);
-  bool close(char* err, size_t errLen);
-  int framesWritten() const { return _count; }
-
- private:
-  std::string _dir;
-  std::string _name;
-  std::FILE* _index = nullptr;
-  GtWriter _gt;
-  bool _gtOpen = false;
-  int _count = 0;
-  std::vector<uint8_t> _buf;
-};
-
 }  // namespace cuetrack

@@ -87,9 +87,11 @@ class OtbFolderReader final : public ImageFolderReader {
 class RgbdFolderWriter {
  public:
   RgbdFolderWriter() = default;
-  bool open(const char* dir, const char* sequenceName, char* err, size_t errLen);
-  bool write(const FrameSlot& frame, char* err, size_t errLen);
-  bool close(char* err, size_t errLen);
+  // Creates dir/rgb and dir/depth; sequenceName heads groundtruth.txt (default: dir's name).
+  bool open(const char* dir, const char* sequenceName = nullptr);
+  bool write(const FrameSlot& frame);
+  bool close();
+  const char* error() const { return _error; }  // one line naming the file at fault
   int framesWritten() const { return _count; }
 
  private:
@@ -98,6 +100,7 @@ class RgbdFolderWriter {
   bool _gtOpen = false;
   bool _wroteIntrinsics = false;
   int _count = 0;
+  char _error[512] = "";
 };
 
 // Stills: 16-bit PNG depth (as stored; the caller scales, e.g. TUM's value / 5 = mm)
