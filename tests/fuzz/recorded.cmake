@@ -1,0 +1,15 @@
+# Fuzz targets of the recorded-frame parsers (area: drivers/recorded). All parsers take
+# memory buffers; their sources are compiled into each target so they carry libFuzzer's
+# coverage instrumentation and ASan/UBSan checks. No OpenCV here (the fuzz preset has none).
+#   fuzz_recorded_pnm         PGM/PPM header + 8/16-bit decoding (fakenect, NYU stills)
+#   fuzz_recorded_index       fakenect INDEX.txt lines
+#   fuzz_recorded_gt          ground-truth files, BoBoT and OTB
+#   fuzz_recorded_intrinsics  intrinsics.txt
+set(_rec ${CMAKE_SOURCE_DIR}/drivers/recorded)
+set(_rec_src ${_rec}/src/RecordedParsers.cpp ${_rec}/src/GroundTruth.cpp ${_rec}/src/FileBuffer.cpp)
+foreach(name pnm index gt intrinsics)
+  cuetrack_add_fuzzer(recorded_${name}
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/recorded/fuzz_recorded_${name}.cpp ${_rec_src})
+  target_include_directories(fuzz_recorded_${name} PRIVATE ${_rec}/include
+    ${CMAKE_SOURCE_DIR}/core/include ${CMAKE_SOURCE_DIR}/drivers/common/include)
+endforeach()
