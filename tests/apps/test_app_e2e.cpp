@@ -264,7 +264,7 @@ TEST_CASE("cuetrack-listen --send starts tracking and prints the ACK") {
   REQUIRE(app.start(aargv, nullptr, appErr.c_str()));
   ChildProcess listener;
   const char* largv[] = {CUETRACK_LISTEN_BIN,   pty.b(),    "--send",
-                         "start:280,240,40,60", "--tracks", "200",
+                         "start:280,240,40,60", "--tracks", "30",
                          "--idle-timeout",      "60",       nullptr};
   REQUIRE(listener.start(largv, listenOut.c_str(), listenErr.c_str()));
   REQUIRE(waitFor([&] { return slurp(listenOut).find(" tracking box=") != std::string::npos; },
