@@ -415,3 +415,23 @@ TEST_CASE("cuetrack runs on a fakenect recording and takes the target from its g
   CHECK(status == 2);
   CHECK(slurp(appErr).find(missing) != std::string::npos);
 }
+
+TEST_CASE("cuetrack-listen ends cleanly when the port closes") {
+  if (!haveSocat()) {
+    WARN("socat not installed: skipped");
+    return;
+  }
+  TempDir tmp;
+  PtyPair pty;
+  REQUIRE(pty.start());
+  const std::string listenErr = tmp.file("l.err");
+  ChildProcess listener;
+  const char* largv[] = {CUETRACK_LISTEN_BIN, pty.b(), "--idle-timeout", "60", nullptr};
+  REQUIRE(listener.start(largv, nullptr, listenErr.c_str()));
+  REQUIRE(waitFor([&] { return slurp(listenErr).find("listening") != std::string::npos; }, 10000));
+  pty.stop();
+  int status = -1;
+  REQUIRE(listener.wait(30000, &status));
+  CHECK(status == 0);
+  CHECK(slurp(listenErr).find("port closed") != std::string::npos);
+}
