@@ -11,6 +11,7 @@ HOST_PKGS=(
   libusb-1.0-0-dev
   socat                              # pseudo-terminal pairs for serial tests
   clang libclang-rt-14-dev           # libFuzzer targets
+  clang-format                       # tests/lint: lint_format
   qemu-user                          # runs ARM test binaries; has the plugin API for icount
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf
   python3
@@ -20,7 +21,7 @@ CROSS_PKGS=(
   libfreenect-dev:armhf libusb-1.0-0-dev:armhf libfreenect0.5:armhf
 )
 
-SUDO=""  # root in CI; sudo keeps DEBIAN_FRONTEND via the env prefix below
+SUDO=""  # root in CI; through sudo, `env` below carries DEBIAN_FRONTEND past sudo's env_reset
 if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 
 missing=()
@@ -48,5 +49,5 @@ for try in 1 2 3; do
 done
 # One transaction: the multiarch libudev1 must match the host's, so apt may
 # upgrade the host's libudev1/systemd in the same step; -y keeps it from asking.
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install "${APT_OPTS[@]}" "${HOST_PKGS[@]}" "${CROSS_PKGS[@]}"
+$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install "${APT_OPTS[@]}" "${HOST_PKGS[@]}" "${CROSS_PKGS[@]}"
 echo "setup: done"
