@@ -1,8 +1,6 @@
 // cuetrack-listen PORT [--baud N] [--csv FILE] [--send COMMAND]...
 // Host tool: decodes the track stream of `cuetrack --serial`, prints or saves it,
 // sends commands. Runs until interrupted or until the port closes.
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -35,24 +33,6 @@ const char* kUsage =
     "  --idle-timeout S     exit with code 4 when nothing arrives for S seconds\n"
     "exit codes: 0 interrupted, port closed or --tracks reached; 1 bad command line;\n"
     "  2 port cannot be opened or a command cannot be sent; 3 CSV write failed; 4 idle timeout\n";
-
-// Message lines: plain text to a file descriptor (stdout or stderr), no prefix.
-class FdLines final : public platform::Reporter {
- public:
-  explicit FdLines(int fd) : _fd(fd) {}
-  void report(const char* line) override {
-    char buf[320];
-    const int n = std::snprintf(buf, sizeof buf, "%s\n", line);
-    if (n > 0) {
-      ssize_t ignored = ::write(
-          _fd, buf, static_cast<size_t>(n) < sizeof buf ? static_cast<size_t>(n) : sizeof buf - 1);
-      (void)ignored;
-    }
-  }
-
- private:
-  int _fd;
-};
 
 bool parseInt(const char* s, long lo, long hi, long* out) {
   char* end = nullptr;
@@ -149,7 +129,9 @@ int main(int argc, char** argv) {
   } else {
     tracks.attachStdout(platform::TextFormat::Line);
   }
-  FdLines messages(csvPath ? 2 : 1);  // with --csv, stdout may carry the CSV itself
+  platform::LineReporter messages(
+      csvPath ? platform::StdStream::Err
+              : platform::StdStream::Out);  // with --csv, stdout may carry the CSV itself
   listen::Listener listener(port, tracks, messages, problems);
 
   platform::MonotonicClock clock;

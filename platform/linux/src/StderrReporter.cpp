@@ -5,18 +5,30 @@
 #include <cstdio>
 
 namespace cuetrack::platform {
+namespace {
 
-void StderrReporter::report(const char* line) {
+// One write per line: lines from concurrent writers do not interleave mid-line.
+void writeLine(int fd, const char* prefix, const char* line) {
   char buf[640];
-  int n = std::snprintf(buf, sizeof buf, "%s: %s\n", _prefix, line);
+  int n = prefix ? std::snprintf(buf, sizeof buf, "%s: %s\n", prefix, line)
+                 : std::snprintf(buf, sizeof buf, "%s\n", line);
   if (n < 0) return;
   if (static_cast<size_t>(n) >= sizeof buf) {
     n = static_cast<int>(sizeof buf) - 1;
     buf[n - 1] = '\n';
   }
-  // One write: lines from the app and a concurrent logger do not interleave mid-line.
-  ssize_t ignored = ::write(2, buf, static_cast<size_t>(n));
+  ssize_t ignored = ::write(fd, buf, static_cast<size_t>(n));
   (void)ignored;
+}
+
+}  // namespace
+
+void StderrReporter::report(const char* line) {
+  writeLine(2, _prefix, line);
+}
+
+void LineReporter::report(const char* line) {
+  writeLine(_stream == StdStream::Out ? 1 : 2, nullptr, line);
 }
 
 }  // namespace cuetrack::platform

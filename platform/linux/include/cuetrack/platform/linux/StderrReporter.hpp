@@ -1,4 +1,5 @@
-// Reporter to stderr: "<prefix>: <line>\n" in one write.
+// Reporters writing one line per report in one write(2): stderr with a program
+// prefix ("cuetrack: ..."), or plain lines to stdout/stderr (the listener's messages).
 #pragma once
 
 #include "cuetrack/platform/Reporter.hpp"
@@ -12,6 +13,17 @@ class StderrReporter final : public Reporter {
 
  private:
   const char* _prefix;
+};
+
+enum class StdStream : unsigned char { Out, Err };
+
+class LineReporter final : public Reporter {
+ public:
+  explicit LineReporter(StdStream stream) : _stream(stream) {}
+  void report(const char* line) override;
+
+ private:
+  StdStream _stream;
 };
 
 }  // namespace cuetrack::platform
