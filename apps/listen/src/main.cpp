@@ -129,9 +129,8 @@ int main(int argc, char** argv) {
   } else {
     tracks.attachStdout(platform::TextFormat::Line);
   }
-  platform::LineReporter messages(
-      csvPath ? platform::StdStream::Err
-              : platform::StdStream::Out);  // with --csv, stdout may carry the CSV itself
+  // With --csv, stdout may carry the CSV itself: other messages go to stderr.
+  platform::LineReporter messages(csvPath ? platform::StdStream::Err : platform::StdStream::Out);
   listen::Listener listener(port, tracks, messages, problems);
 
   platform::MonotonicClock clock;
