@@ -9,9 +9,10 @@
 namespace cuetrack::integral {
 
 #if defined(__x86_64__) || defined(__i386__)
+// libgcc fills the CPU model (including the OS's YMM support) before main; reading
+// it is one load, and no function-local static (core has no thread-safe statics).
 bool avx2Available() {
-  static const bool kHas = __builtin_cpu_supports("avx2");
-  return kHas;
+  return __builtin_cpu_supports("avx2");
 }
 const char* activeIsa() {
   return avx2Available() ? "avx2+sse2" : "sse2";
