@@ -5,11 +5,11 @@ namespace cuetrack {
 void MotionModel2d::predict(Particle& q, Rng& rng, float spread) const {
   const float side = fmath::sqrtf(q.size[0] * q.size[1]);
   for (int a = 0; a < 2; ++a) {
-    q.v[a] = velocityDecay * q.v[a] + spread * velocityNoise * side * rng.gaussian();
-    q.p[a] += q.v[a] + spread * positionNoise * side * rng.gaussian();
+    q.v[a] = velocityDecay * q.v[a] + spread * velocityNoise * side * rng.gaussianFast();
+    q.p[a] += q.v[a] + spread * positionNoise * side * rng.gaussianFast();
   }
-  const float ls = scaleNoise * rng.gaussian();
-  const float la = aspectNoise * rng.gaussian();
+  const float ls = scaleNoise * rng.gaussianFast();
+  const float la = aspectNoise * rng.gaussianFast();
   q.size[0] *= fmath::fastExp(ls + la);
   q.size[1] *= fmath::fastExp(ls - la);
 }
@@ -18,12 +18,12 @@ void MotionModel3d::predict(Particle& q, Rng& rng, float dtS, float spread) cons
   const float velStd = fmath::sqrtf(velocityNoiseMm2PerS2 * dtS);
   const float posStd = spread * positionNoise * q.size[0] * fmath::sqrtf(dtS * 30.f);
   for (int a = 0; a < 3; ++a) {
-    q.p[a] += q.v[a] * dtS + posStd * rng.gaussian();
-    q.v[a] += velStd * rng.gaussian();
+    q.p[a] += q.v[a] * dtS + posStd * rng.gaussianFast();
+    q.v[a] += velStd * rng.gaussianFast();
   }
   if (sizeNoise > 0.f) {
-    q.size[0] *= fmath::fastExp(sizeNoise * rng.gaussian());
-    q.size[1] *= fmath::fastExp(sizeNoise * rng.gaussian());
+    q.size[0] *= fmath::fastExp(sizeNoise * rng.gaussianFast());
+    q.size[1] *= fmath::fastExp(sizeNoise * rng.gaussianFast());
   }
 }
 

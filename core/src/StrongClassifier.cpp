@@ -3,7 +3,8 @@
 namespace cuetrack {
 
 bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache,
-                             const TrainingSet& set, int m, float* featureErrors) {
+                             const TrainingSet& set, int m, float* featureErrors, int candidates,
+                             float anchorWeight) {
   const int n = set.capacity();
   const int8_t* y = set.labels();
   const int numPos = set.numPositives(), numNeg = set.numNegatives();
@@ -11,28 +12,60 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
   if (m > kMaxWeakClassifiers) m = kMaxWeakClassifiers;
   float w[kMaxTrainingExamples];
   float c[kMaxTrainingExamples];  // running sum of f_m(x_i)
+  float posMass = 0.f;
+  for (int i = 0; i < n; ++i)
+    if (set.used(i) && y[i] > 0) posMass += set.isAnchor(i) ? anchorWeight : 1.f;
   for (int i = 0; i < n; ++i) {
     c[i] = 0.f;
     if (!set.used(i))
       w[i] = 0.f;
+    else if (y[i] > 0)
+      w[i] = 0.5f * (set.isAnchor(i) ? anchorWeight : 1.f) / posMass;
     else
-      w[i] = y[i] > 0 ? 0.5f / static_cast<float>(numPos) : 0.5f / static_cast<float>(numNeg);
+      w[i] = 0.5f / static_cast<float>(numNeg);
   }
+  if (candidates < 1) candidates = 1;
+  if (candidates > kMaxPoolFeatures) candidates = kMaxPoolFeatures;
+  int cand[kMaxPoolFeatures];  // later rounds' candidates, ascending round-0 error
+  float candErr[kMaxPoolFeatures];
+  int numCand = 0;
   _m = 0;
   for (int round = 0; round < m; ++round) {
     int best = -1;
     float bestErr = 0.f;
-    for (int f = 0; f < pool.size(); ++f) {
-      const float e = WeakClassifier::binnedError(cache.row(f), w, y, n);
-      if (round == 0 && featureErrors != nullptr) featureErrors[f] = e;
-      if (best < 0 || e < bestErr) {
-        best = f;
-        bestErr = e;
+    if (round == 0) {
+      for (int f = 0; f < pool.size(); ++f) {
+        const float e = WeakClassifier::binnedError(cache.row(f), w, y, n);
+        if (featureErrors != nullptr) featureErrors[f] = e;
+        if (best < 0 || e < bestErr) {
+          best = f;
+          bestErr = e;
+        }
+        // Keep the `candidates` lowest errors (insertion; ties keep pool order).
+        if (numCand < candidates || e < candErr[numCand - 1]) {
+          int j = numCand < candidates ? numCand++ : numCand - 1;
+          while (j > 0 && candErr[j - 1] > e) {
+            cand[j] = cand[j - 1];
+            candErr[j] = candErr[j - 1];
+            --j;
+          }
+          cand[j] = f;
+          candErr[j] = e;
+        }
+      }
+    } else {
+      for (int k = 0; k < numCand; ++k) {
+        const int f = cand[k];
+        const float e = WeakClassifier::binnedError(cache.row(f), w, y, n);
+        if (best < 0 || e < bestErr) {
+          best = f;
+          bestErr = e;
+        }
       }
     }
     const Code* codes = cache.row(best);
     _feature[_m] = pool[best];
-    _weak[_m].fit(codes, w, y, n, pool[best].kind);
+    _weak[_m].fit(codes, w, y, n, pool[best].kind, &_shares);
     float total = 0.f;
     for (int i = 0; i < n; ++i) {
       if (w[i] <= 0.f) continue;

@@ -6,7 +6,6 @@ namespace {
 constexpr float kMinBoxPx = 8.f;        // smallest window side [px]
 constexpr float kNegativeRange = 1.5f;  // negatives within +-1.5 window sizes
 constexpr float kNegativeMaxOverlap = 0.3f;
-constexpr float kNearMaxOverlap = 0.5f;
 constexpr float kRoiMargin = 1.6f;  // ROI: particle boxes + this x mean size per side
 constexpr float kLostSpread = 3.f;  // motion noise gain while lost
 constexpr float kDefaultDtS = 1.f / 30.f;
@@ -73,6 +72,9 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
   _gate.minConfidence = _config.learnConfidence;
   _gate.minConcentration = _config.learnConcentration;
   _motion3d.velocityNoiseMm2PerS2 = _config.velocityNoiseMm2PerS2;
+  _motion2d.positionNoise = _config.positionNoise2d;
+  _motion2d.scaleNoise = _config.scaleNoise2d;
+  _motion2d.aspectNoise = _config.aspectNoise2d;
   _motion3d.sizeNoise = _config.adaptCylinderSize ? 0.01f : 0.f;
   reset();
 }
@@ -143,7 +145,7 @@ void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
     // Every other negative is a near miss (shifted and/or rescaled, overlap < 0.5) so
     // the classifier learns to localise; the rest are background within the range.
     const bool near = (k & 1) == 0;
-    const float maxOverlap = near ? kNearMaxOverlap : kNegativeMaxOverlap;
+    const float maxOverlap = near ? _config.nearNegativeOverlap : kNegativeMaxOverlap;
     Box b = around;
     for (int attempt = 0; attempt < 12; ++attempt) {
       const float range = near ? 0.6f : kNegativeRange;
@@ -164,8 +166,9 @@ void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
       }
       if (!sized) {
         const float s = fmath::fastExp((near ? 0.4f : 0.15f) * _rng.gaussian());
-        w *= s;
-        h *= s;
+        const float a = near ? fmath::fastExp(0.25f * _rng.gaussian()) : 1.f;  // aspect
+        w *= s * a;
+        h *= s / a;
       }
       if (w > rx1 - rx0) w = rx1 - rx0;
       if (h > ry1 - ry0) h = ry1 - ry0;
@@ -244,7 +247,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
 
   if (!_pool.build(_config.useGray, _depthFeatures, _config.useColour, _config.sampling, _rng))
     return InitError::BoxTooSmall;  // cannot happen with kMaxPoolFeatures (static_assert-backed)
-  _set.reset(_config.numTrainingExamples);
+  _set.reset(_config.numTrainingExamples, _config.initialPositives);
   addExample(b, true);  // slot 0: the anchor
   for (int i = 1; i < _config.initialPositives; ++i) {
     const float s = fmath::fastExp(0.03f * _rng.gaussian());
@@ -255,7 +258,8 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   addNegatives(b, _set.numNegatives() + _config.numTrainingExamples,
                roi);  // fill the negative FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
-  _strong.train(_pool, _cache, _set, _config.numWeakClassifiers, _featureErrors);
+  _strong.train(_pool, _cache, _set, _config.numWeakClassifiers, _featureErrors,
+                _config.boostCandidates, _config.anchorWeight);
 
   _filter.setSize(_config.numParticles);
   _filter.fill(q);
@@ -271,7 +275,8 @@ void Tracker::learn(const Box& estimate, const PixelRect& roi) {
     const int replaced = _pool.update(_featureErrors, _rng);
     if (replaced >= 0) _cache.refreshFeature(replaced, _pool, _set);
   }
-  _strong.train(_pool, _cache, _set, _config.numWeakClassifiers, _featureErrors);
+  _strong.train(_pool, _cache, _set, _config.numWeakClassifiers, _featureErrors,
+                _config.boostCandidates, _config.anchorWeight);
 }
 
 TrackResult Tracker::update(const Frame& frame) {
@@ -329,14 +334,15 @@ TrackResult Tracker::update(const Frame& frame) {
   const uint64_t t2 = now();
 
   // Weigh: w = exp(lambda (c - c_max)).
-  float cMax = -2.f;
   for (int i = 0; i < n; ++i) {
     const Box& b = _boxes[i];
-    const bool ok = !b.empty() && b.w >= 4.f && b.h >= 4.f && b.x + b.w > 0.f && b.y + b.h > 0.f &&
-                    b.x < static_cast<float>(_imageW) && b.y < static_cast<float>(_imageH);
-    _scores[i] = ok ? _strong.evaluate(_channels.tables(), b) : -1.f;
-    if (_scores[i] > cMax) cMax = _scores[i];
+    _valid[i] = !b.empty() && b.w >= 4.f && b.h >= 4.f && b.x + b.w > 0.f && b.y + b.h > 0.f &&
+                b.x < static_cast<float>(_imageW) && b.y < static_cast<float>(_imageH);
   }
+  _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores);
+  float cMax = -2.f;
+  for (int i = 0; i < n; ++i)
+    if (_scores[i] > cMax) cMax = _scores[i];
   float* w = _filter.weights();
   for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(_config.weightGain * (_scores[i] - cMax));
 

@@ -60,11 +60,14 @@ void extractPatch(const FrameTables& t, const Box& win, ExamplePatch* out) {
   }
 }
 
-void TrainingSet::reset(int capacity) {
+void TrainingSet::reset(int capacity, int anchors) {
   if (capacity > kMaxTrainingExamples) capacity = kMaxTrainingExamples;
   if (capacity < 4) capacity = 4;
   _capacity = capacity;
   _posCapacity = capacity / 4 < 2 ? 2 : capacity / 4;
+  if (anchors < 1) anchors = 1;
+  if (anchors > _posCapacity - 1) anchors = _posCapacity - 1;
+  _anchors = anchors;
   _nextPos = 0;
   _nextNeg = _posCapacity;
   for (int i = 0; i < kMaxTrainingExamples; ++i) {
@@ -77,7 +80,7 @@ int TrainingSet::add(const FrameTables& t, const Box& win, bool positive) {
   int slot;
   if (positive) {
     slot = _nextPos;
-    _nextPos = _nextPos + 1 >= _posCapacity ? 1 : _nextPos + 1;  // slot 0 is kept
+    _nextPos = _nextPos + 1 >= _posCapacity ? _anchors : _nextPos + 1;  // anchors are kept
   } else {
     slot = _nextNeg;
     _nextNeg = _nextNeg + 1 >= _capacity ? _posCapacity : _nextNeg + 1;

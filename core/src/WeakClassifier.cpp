@@ -29,32 +29,39 @@ constexpr float kEps = 1e-7f;
 
 }  // namespace
 
-int magIndex(float mag, FeatureKind kind) {
-  const int base = rawMagCode(binning(kind).minMag);
-  const int i = rawMagCode(mag) - base;
-  return i < 0 ? 0 : (i >= kLutMags ? kLutMags - 1 : i);
-}
-
 float magOfIndex(int idx, FeatureKind kind) {
   const int base = rawMagCode(binning(kind).minMag);
   const uint32_t bits = (static_cast<uint32_t>(base + idx) << 22) | (1u << 21);
   return fmath::sqrtf(fmath::bitsFloat(bits));
 }
 
-int angleIndex(float angleRad) {
-  int i = static_cast<int>(angleRad * (static_cast<float>(kLutAngles) / fmath::kTwoPi));
-  return i < 0 ? 0 : (i >= kLutAngles ? kLutAngles - 1 : i);
+void ShareTable::build() {
+  for (int k = 0; k < kNumFeatureKinds; ++k)
+    for (int o = 0; o < kLutAngles; ++o) {
+      const float angle = (static_cast<float>(o) + 0.5f) * (fmath::kTwoPi / kLutAngles);
+      for (int q = 0; q < kLutMags; ++q) {
+        const int c = o * kLutMags + q;
+        const FeatureKind kind = static_cast<FeatureKind>(k);
+        shares(angle, magOfIndex(q, kind), kind, &a[k][c], &wCentre[k][c], &wA[k][c], &wB[k][c]);
+      }
+    }
 }
 
 Code encode(const Response& r, FeatureKind kind) {
   Code c;
-  if (!r.valid) return c;
-  c.valid = 1;
+  if (!r.valid) {
+    c.wA = 1.f;  // all into kInvalidBin (binA == binB == kInvalidBin)
+    return c;
+  }
   const float minMag = binning(kind).minMag;
-  c.lnMag = fmath::fastLog(r.mag > minMag ? r.mag : minMag);
-  shares(r.angle, r.mag, kind, &c.a, &c.wCentre, &c.wA, &c.wB);
-  c.angleIdx = static_cast<uint8_t>(angleIndex(r.angle));
-  c.magIdx = static_cast<uint8_t>(magIndex(r.mag, kind));
+  const float mag = r.mag();
+  c.lnMag = fmath::fastLog(mag > minMag ? mag : minMag);
+  uint8_t a;
+  shares(r.angle(), mag, kind, &a, &c.wCentre, &c.wA, &c.wB);
+  c.binA = static_cast<uint8_t>(1 + a);
+  c.binB = static_cast<uint8_t>(1 + (a + 1 == kOrientBins ? 0 : a + 1));
+  c.angleIdx = static_cast<uint8_t>(angleIndex(r.x, r.y));
+  c.magIdx = static_cast<uint8_t>(magIndexSq(r.magSquared(), kind));
   return c;
 }
 
@@ -64,14 +71,9 @@ float WeakClassifier::binnedError(const Code* codes, const float* w, const int8_
     const Code& c = codes[i];
     float* h = acc[y[i] > 0 ? 0 : 1];
     const float wi = w[i];
-    if (!c.valid) {
-      h[kInvalidBin] += wi;
-      continue;
-    }
-    const int b = 1 + c.a, b2 = 1 + (c.a + 1 == kOrientBins ? 0 : c.a + 1);
     h[0] += wi * c.wCentre;
-    h[b] += wi * c.wA;
-    h[b2] += wi * c.wB;
+    h[c.binA] += wi * c.wA;
+    h[c.binB] += wi * c.wB;
   }
   float err = 0.f;
   for (int b = 0; b < kNumBins; ++b) {
@@ -82,7 +84,7 @@ float WeakClassifier::binnedError(const Code* codes, const float* w, const int8_
 }
 
 void WeakClassifier::fit(const Code* codes, const float* w, const int8_t* y, int n,
-                         FeatureKind kind) {
+                         FeatureKind kind, const ShareTable* table) {
   _kind = kind;
   // s[class][bin][0..2]: sum w*share, sum w*share*ln m, sum w*share*(ln m)^2
   float s[2][kNumBins][3] = {};
@@ -90,12 +92,12 @@ void WeakClassifier::fit(const Code* codes, const float* w, const int8_t* y, int
     const Code& c = codes[i];
     const int cls = y[i] > 0 ? 0 : 1;
     const float wi = w[i];
-    if (!c.valid) {
+    if (!c.valid()) {
       s[cls][kInvalidBin][0] += wi;
       continue;
     }
     const float l = c.lnMag, l2 = c.lnMag * c.lnMag;
-    const int bins[3] = {0, 1 + c.a, 1 + (c.a + 1 == kOrientBins ? 0 : c.a + 1)};
+    const int bins[3] = {0, c.binA, c.binB};
     const float sh[3] = {c.wCentre, c.wA, c.wB};
     for (int k = 0; k < 3; ++k) {
       const float ws = wi * sh[k];
@@ -136,12 +138,21 @@ void WeakClassifier::fit(const Code* codes, const float* w, const int8_t* y, int
       }
     }
   }
+  const int k = static_cast<int>(kind);
   for (int o = 0; o < kLutAngles; ++o) {
     const float angle = (static_cast<float>(o) + 0.5f) * (fmath::kTwoPi / kLutAngles);
     for (int q = 0; q < kLutMags; ++q) {
       uint8_t a;
       float wc, wa, wb;
-      shares(angle, magOfIndex(q, kind), kind, &a, &wc, &wa, &wb);
+      if (table != nullptr) {
+        const int c = o * kLutMags + q;
+        a = table->a[k][c];
+        wc = table->wCentre[k][c];
+        wa = table->wA[k][c];
+        wb = table->wB[k][c];
+      } else {
+        shares(angle, magOfIndex(q, kind), kind, &a, &wc, &wa, &wb);
+      }
       const int b1 = 1 + a, b2 = 1 + (a + 1 == kOrientBins ? 0 : a + 1);
       const float p = wc * dens[0][0][q] + wa * dens[0][b1][q] + wb * dens[0][b2][q];
       const float nn = wc * dens[1][0][q] + wa * dens[1][b1][q] + wb * dens[1][b2][q];

@@ -14,8 +14,8 @@ namespace {
 
 Response resp(float angle, float mag) {
   Response r;
-  r.angle = angle;
-  r.mag = mag;
+  r.x = mag * std::cos(angle);
+  r.y = mag * std::sin(angle);
   r.valid = true;
   return r;
 }
@@ -34,8 +34,9 @@ Response sample(bool positive, Rng& r) {
 TEST_CASE("encode splits a response between the right bins", "[core][weak]") {
   // Strong gradient exactly between outer bins 0 and 1 (bin centres at 22.5 and 67.5 deg).
   const Code c = encode(resp(45.f * 3.14159265f / 180.f, 100.f), FeatureKind::Gray);
-  REQUIRE(c.valid);
-  REQUIRE(c.a == 0);
+  REQUIRE(c.valid());
+  REQUIRE(c.binA == 1);
+  REQUIRE(c.binB == 2);
   REQUIRE(c.wCentre == Approx(0.f));
   REQUIRE(c.wA == Approx(0.5f).margin(1e-4));
   REQUIRE(c.wB == Approx(0.5f).margin(1e-4));
@@ -46,6 +47,17 @@ TEST_CASE("encode splits a response between the right bins", "[core][weak]") {
   // Below the inner threshold: all centre. Colour: chroma 0.5 < 1.
   const Code e = encode(resp(2.f, 0.5f), FeatureKind::Colour);
   REQUIRE(e.wCentre == Approx(1.f));
+  // The angle sector is floor(atan2 / (2 pi / 32)) except within ~1 deg of an edge.
+  int agree = 0;
+  for (int i = 0; i < 3200; ++i) {
+    const float a = (static_cast<float>(i) + 0.37f) * (6.2831853f / 3200.f);
+    const int got = angleIndex(3.f * std::cos(a), 3.f * std::sin(a));
+    const int want = static_cast<int>(a / (6.2831853f / 32.f));
+    const int diff = (got - want + 32) % 32;
+    REQUIRE((diff == 0 || diff == 1 || diff == 31));
+    agree += diff == 0 ? 1 : 0;
+  }
+  REQUIRE(agree > 3200 * 9 / 10);
   // Quantised magnitudes are monotonic and a quarter octave apart.
   for (int i = 1; i < kLutMags; ++i) {
     REQUIRE(magOfIndex(i, FeatureKind::Gray) > magOfIndex(i - 1, FeatureKind::Gray));

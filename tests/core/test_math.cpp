@@ -51,15 +51,19 @@ TEST_CASE("Rng repeats for a seed and differs between seeds", "[core][math]") {
 
 TEST_CASE("Rng gaussian has zero mean and unit variance; uniform is in [0, 1)", "[core][math]") {
   Rng r(7);
-  double s = 0, s2 = 0;
   const int n = 200000;
-  for (int i = 0; i < n; ++i) {
-    const double g = r.gaussian();
-    s += g;
-    s2 += g * g;
+  for (int fast = 0; fast < 2; ++fast) {
+    double s = 0, s2 = 0, s4 = 0;
+    for (int i = 0; i < n; ++i) {
+      const double g = fast ? r.gaussianFast() : r.gaussian();
+      s += g;
+      s2 += g * g;
+      s4 += g * g * g * g;
+    }
+    REQUIRE(s / n == Approx(0.0).margin(0.01));
+    REQUIRE(s2 / n == Approx(1.0).epsilon(0.02));
+    REQUIRE(s4 / n == Approx(fast ? 2.7 : 3.0).epsilon(0.05));  // Irwin-Hall(4): 3 - 1.2/4
   }
-  REQUIRE(s / n == Approx(0.0).margin(0.01));
-  REQUIRE(s2 / n == Approx(1.0).epsilon(0.02));
   float lo = 1.f, hi = 0.f;
   for (int i = 0; i < 100000; ++i) {
     const float u = r.uniform();

@@ -27,9 +27,11 @@ struct Feature {
 };
 
 struct Response {
-  float angle = 0.f;  // [rad] in [0, 2 pi)
-  float mag = 0.f;    // grey levels, mm, or chroma (grey levels)
+  float x = 0.f, y = 0.f;  // (gx, gy) or (alpha, beta), in the kind's unit
   bool valid = false;
+  float angle() const { return fmath::fastAtan2(y, x); }  // [rad] in [0, 2 pi)
+  float mag() const { return fmath::sqrtf(x * x + y * y); }
+  float magSquared() const { return x * x + y * y; }
 };
 
 // Read-only views of the integral tables of one image region. U holds gray, depth
@@ -61,13 +63,16 @@ inline T at(const T* t, int stride, int x, int y) {
 // q[2] bottom-left, q[3] bottom-right. Unsigned tables wrap exactly (Integral.hpp).
 template <typename T>
 inline void quadrants(const T* t, int stride, const int xs[3], const int ys[3], float q[4]) {
-  T c[9];
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) c[j * 3 + i] = at(t, stride, xs[i], ys[j]);
-  q[0] = static_cast<float>(static_cast<T>(c[4] - c[3] - c[1] + c[0]));
-  q[1] = static_cast<float>(static_cast<T>(c[5] - c[4] - c[2] + c[1]));
-  q[2] = static_cast<float>(static_cast<T>(c[7] - c[6] - c[4] + c[3]));
-  q[3] = static_cast<float>(static_cast<T>(c[8] - c[7] - c[5] + c[4]));
+  const T* r0 = t + static_cast<std::ptrdiff_t>(ys[0]) * stride;
+  const T* r1 = t + static_cast<std::ptrdiff_t>(ys[1]) * stride;
+  const T* r2 = t + static_cast<std::ptrdiff_t>(ys[2]) * stride;
+  const T c0 = r0[xs[0]], c1 = r0[xs[1]], c2 = r0[xs[2]];
+  const T c3 = r1[xs[0]], c4 = r1[xs[1]], c5 = r1[xs[2]];
+  const T c6 = r2[xs[0]], c7 = r2[xs[1]], c8 = r2[xs[2]];
+  q[0] = static_cast<float>(static_cast<T>(c4 - c3 - c1 + c0));
+  q[1] = static_cast<float>(static_cast<T>(c5 - c4 - c2 + c1));
+  q[2] = static_cast<float>(static_cast<T>(c7 - c6 - c4 + c3));
+  q[3] = static_cast<float>(static_cast<T>(c8 - c7 - c5 + c4));
 }
 
 template <typename T>
@@ -79,15 +84,18 @@ inline float rect(const T* t, int stride, int x0, int y0, int x1, int y1) {
 }  // namespace detail
 
 // Pixel rectangle [x0, x1) x [y0, y1) of feature f in window `win` (frame px), in the
-// tables' own coordinates and clipped to them. False when less than 2x2 px remain
-// (a gradient needs two halves per axis).
+// tables' own coordinates and clipped to them, with an even width and height so the
+// halves are equal. False when less than 2x2 px remain (a gradient needs two halves).
 template <typename U, typename S>
 inline bool featureRect(const Feature& f, const Box& win, const ChannelTables<U, S>& t, int* x0,
                         int* y0, int* x1, int* y1) {
   const float fx0 = win.x + f.x * win.w - static_cast<float>(t.originX);
   const float fy0 = win.y + f.y * win.h - static_cast<float>(t.originY);
-  int a = fmath::roundToInt(fx0), b = fmath::roundToInt(fx0 + f.w * win.w);
-  int c = fmath::roundToInt(fy0), d = fmath::roundToInt(fy0 + f.h * win.h);
+  // Round half up without a branch (valid above -4096 px).
+  int a = static_cast<int>(fx0 + 4096.5f) - 4096;
+  int b = static_cast<int>(fx0 + f.w * win.w + 4096.5f) - 4096;
+  int c = static_cast<int>(fy0 + 4096.5f) - 4096;
+  int d = static_cast<int>(fy0 + f.h * win.h + 4096.5f) - 4096;
   if (b < a + 2) b = a + 2;  // tiny windows: at least two pixels per axis
   if (d < c + 2) d = c + 2;
   if (a < 0) a = 0;
@@ -96,57 +104,64 @@ inline bool featureRect(const Feature& f, const Box& win, const ChannelTables<U,
   if (d > t.height) d = t.height;
   *x0 = a;
   *y0 = c;
-  *x1 = b;
-  *y1 = d;
+  *x1 = a + ((b - a) & ~1);
+  *y1 = c + ((d - c) & ~1);
   return b - a >= 2 && d - c >= 2;
 }
 
-inline Response polar(float gx, float gy) {
+inline Response vec(float x, float y) {
   Response r;
-  r.angle = fmath::fastAtan2(gy, gx);
-  r.mag = fmath::sqrtf(gx * gx + gy * gy);
+  r.x = x;
+  r.y = y;
   r.valid = true;
   return r;
 }
 
-// The response of feature f on the window `win` (frame px for frames; the patch's
-// own [0, size]^2 for examples).
-template <typename U, typename S>
-inline Response evaluate(const Feature& f, const Box& win, const ChannelTables<U, S>& t) {
+// The response of a feature of kind K on the window `win` (frame px for frames; the
+// patch's own [0, size]^2 for examples).
+template <FeatureKind K, typename U, typename S>
+inline Response evaluateKind(const Feature& f, const Box& win, const ChannelTables<U, S>& t) {
   int x0, y0, x1, y1;
   if (!featureRect(f, win, t, &x0, &y0, &x1, &y1)) return Response{};
-  if (f.kind == FeatureKind::Colour) {
-    const float area = static_cast<float>((x1 - x0) * (y1 - y0));
+  const float area = static_cast<float>((x1 - x0) * (y1 - y0));
+  const float invArea = 1.f / area;
+  if constexpr (K == FeatureKind::Colour) {
     const float a2 = detail::rect(t.alpha2, t.stride, x0, y0, x1, y1);
     const float b = detail::rect(t.beta, t.stride, x0, y0, x1, y1);
-    const float alpha = 0.5f * a2 / area;
-    const float beta = 0.866025404f * b / area;
-    return polar(alpha, beta);
+    return vec(0.5f * a2 * invArea, 0.866025404f * b * invArea);
   }
   const int xs[3] = {x0, (x0 + x1) >> 1, x1};
   const int ys[3] = {y0, (y0 + y1) >> 1, y1};
-  const float wl = static_cast<float>(xs[1] - xs[0]), wr = static_cast<float>(xs[2] - xs[1]);
-  const float ht = static_cast<float>(ys[1] - ys[0]), hb = static_cast<float>(ys[2] - ys[1]);
   float q[4];
-  if (f.kind == FeatureKind::Gray) {
+  if constexpr (K == FeatureKind::Gray) {
+    // Equal halves: mean(right) - mean(left) = (R - L) / (A / 2).
     detail::quadrants(t.gray, t.stride, xs, ys, q);
-    const float h = ht + hb, w = wl + wr;
-    const float gx = (q[1] + q[3]) / (wr * h) - (q[0] + q[2]) / (wl * h);
-    const float gy = (q[2] + q[3]) / (hb * w) - (q[0] + q[1]) / (ht * w);
-    return polar(gx, gy);
+    const float k = 2.f * invArea;
+    return vec(((q[1] + q[3]) - (q[0] + q[2])) * k, ((q[2] + q[3]) - (q[0] + q[1])) * k);
   }
   // Depth: means over valid pixels only; a half that is less than half valid is no
   // measurement, so holes (0 mm) never make a gradient.
   float n[4];
   detail::quadrants(t.depth, t.stride, xs, ys, q);
   detail::quadrants(t.count, t.stride, xs, ys, n);
-  const float h = ht + hb, w = wl + wr;
   const float nl = n[0] + n[2], nr = n[1] + n[3], nt = n[0] + n[1], nb = n[2] + n[3];
-  if (nl < 0.5f * wl * h || nr < 0.5f * wr * h || nt < 0.5f * ht * w || nb < 0.5f * hb * w)
-    return Response{};
-  const float gx = (q[1] + q[3]) / nr - (q[0] + q[2]) / nl;
-  const float gy = (q[2] + q[3]) / nb - (q[0] + q[1]) / nt;
-  return polar(gx, gy);
+  const float minValid = 0.25f * area;  // half of a half
+  if (nl < minValid || nr < minValid || nt < minValid || nb < minValid) return Response{};
+  const float l = q[0] + q[2], r = q[1] + q[3], tp = q[0] + q[1], bt = q[2] + q[3];
+  return vec((r * nl - l * nr) / (nl * nr), (bt * nt - tp * nb) / (nt * nb));
+}
+
+template <typename U, typename S>
+inline Response evaluate(const Feature& f, const Box& win, const ChannelTables<U, S>& t) {
+  switch (f.kind) {
+    case FeatureKind::Gray:
+      return evaluateKind<FeatureKind::Gray>(f, win, t);
+    case FeatureKind::Depth:
+      return evaluateKind<FeatureKind::Depth>(f, win, t);
+    case FeatureKind::Colour:
+      break;
+  }
+  return evaluateKind<FeatureKind::Colour>(f, win, t);
 }
 
 }  // namespace cuetrack

@@ -38,6 +38,14 @@ class Rng {
     return static_cast<uint32_t>((static_cast<uint64_t>(next()) * n) >> 32);
   }
 
+  // Approximately normal, for process noise: the sum of four uniform bytes of one draw
+  // (Irwin-Hall), scaled to mean 0 and variance exactly 1; tails end at +-3.45.
+  float gaussianFast() {
+    const uint32_t r = next();
+    const int s = static_cast<int>((r & 255u) + ((r >> 8) & 255u) + ((r >> 16) & 255u) + (r >> 24));
+    return (static_cast<float>(s) - 510.f) * (1.f / 147.799639f);  // sqrt(4 (256^2 - 1) / 12)
+  }
+
   // Standard normal (Marsaglia's polar method).
   float gaussian() {
     if (_hasSpare) {

@@ -2,7 +2,8 @@
 // c(x) = (1/M) sum_m f_m(x) in [-1, 1]. Each round picks the pool feature whose
 // binned weak classifier has the least weighted squared error, fits its lognormal
 // weak classifier to the current weights, and reweights w_i *= exp(-y_i f_m(x_i)).
-// Positives and negatives start with half the total weight each.
+// Positives and negatives start with half the total weight each. For speed, round 0
+// ranks the whole pool and later rounds search only its `candidates` best features.
 #pragma once
 
 #include <cstdint>
@@ -18,14 +19,40 @@ class StrongClassifier {
  public:
   // Trains M rounds. featureErrors (pool size) receives each feature's first-round
   // error (the pool update's ranking). False when there are no positives or negatives.
+  StrongClassifier() { _shares.build(); }
   bool train(const FeaturePool& pool, const ResponseCache& cache, const TrainingSet& set, int m,
-             float* featureErrors);
+             float* featureErrors, int candidates = kMaxPoolFeatures, float anchorWeight = 1.f);
   // c(x) for window `win` (frame px) on the frame tables.
   template <typename U, typename S>
   float evaluate(const ChannelTables<U, S>& t, const Box& win) const {
     float sum = 0.f;
     for (int i = 0; i < _m; ++i) sum += _weak[i].predict(cuetrack::evaluate(_feature[i], win, t));
     return _m > 0 ? sum / static_cast<float>(_m) : 0.f;
+  }
+  // c(x) for n windows at once, weak classifier by weak classifier (each one's table and
+  // feature stay in cache across the windows); windows with valid[i] == 0 get -1.
+  template <typename U, typename S>
+  void evaluateMany(const ChannelTables<U, S>& t, const Box* wins, const uint8_t* valid, int n,
+                    float* out) const {
+    for (int i = 0; i < n; ++i) out[i] = 0.f;
+    const ChannelTables<U, S> tl = t;  // a local copy: the compiler keeps it in registers
+    for (int m = 0; m < _m; ++m) {
+      const Feature f = _feature[m];
+      const WeakClassifier& w = _weak[m];
+      switch (f.kind) {
+        case FeatureKind::Gray:
+          accumulate<FeatureKind::Gray>(f, w, tl, wins, valid, n, out);
+          break;
+        case FeatureKind::Depth:
+          accumulate<FeatureKind::Depth>(f, w, tl, wins, valid, n, out);
+          break;
+        case FeatureKind::Colour:
+          accumulate<FeatureKind::Colour>(f, w, tl, wins, valid, n, out);
+          break;
+      }
+    }
+    const float inv = _m > 0 ? 1.f / static_cast<float>(_m) : 0.f;
+    for (int i = 0; i < n; ++i) out[i] = valid[i] ? out[i] * inv : -1.f;
   }
   int size() const { return _m; }
   const Feature& feature(int i) const { return _feature[i]; }
@@ -34,10 +61,18 @@ class StrongClassifier {
   float trainingError() const { return _trainingError; }
 
  private:
+  template <FeatureKind K, typename U, typename S>
+  static void accumulate(const Feature& f, const WeakClassifier& w, const ChannelTables<U, S>& t,
+                         const Box* wins, const uint8_t* valid, int n, float* out) {
+    for (int i = 0; i < n; ++i)
+      if (valid[i]) out[i] += w.predict(evaluateKind<K>(f, wins[i], t));
+  }
+
   Feature _feature[kMaxWeakClassifiers];
   WeakClassifier _weak[kMaxWeakClassifiers];
   int _m = 0;
   float _trainingError = 0.f;
+  ShareTable _shares;
 };
 
 }  // namespace cuetrack

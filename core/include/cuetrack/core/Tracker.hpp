@@ -94,6 +94,7 @@ class Tracker {
   ParticleFilter _filter;
   Box _boxes[kMaxParticles];
   float _scores[kMaxParticles];
+  uint8_t _valid[kMaxParticles];
   float _featureErrors[kMaxPoolFeatures];
   uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
 };

@@ -38,8 +38,10 @@ void extractPatch(const FrameTables& t, const Box& win, ExamplePatch* out);
 
 class TrainingSet {
  public:
-  // capacity <= kMaxTrainingExamples; a quarter of it (at least 2) holds positives.
-  void reset(int capacity);
+  // capacity <= kMaxTrainingExamples; a quarter of it (at least 2) holds positives, of
+  // which the first `anchors` (>= 1) are kept for good (the initial ones: against drift).
+  void reset(int capacity, int anchors = 1);
+  bool isAnchor(int slot) const { return slot < _anchors; }
   // Adds an example, replacing the oldest of its FIFO; returns the slot written.
   int add(const FrameTables& t, const Box& win, bool positive);
   int capacity() const { return _capacity; }
@@ -56,7 +58,8 @@ class TrainingSet {
   bool _used[kMaxTrainingExamples] = {};
   int _capacity = 0;
   int _posCapacity = 0;
-  int _nextPos = 0;  // next FIFO slot for positives, in [1, _posCapacity)
+  int _anchors = 1;
+  int _nextPos = 0;  // next FIFO slot for positives, in [_anchors, _posCapacity)
   int _nextNeg = 0;  // next FIFO slot for negatives, in [_posCapacity, _capacity)
 };
 // 140 examples x 5 channels x 33^2 cells x 4 B = 3,049,200 B.

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 
+#include "cuetrack/core/Config.hpp"
 #include "cuetrack/core/Features.hpp"
 
 namespace cuetrack {
@@ -43,32 +44,83 @@ inline const KindBinning& binning(FeatureKind k) {
 }
 
 // A response coded for training: its bin shares, its table cell and ln(magnitude).
+// Bins: 0 centre, 1..kOrientBins outer, kInvalidBin no measurement; an invalid
+// response puts its whole share (wA = 1) into kInvalidBin, so accumulating needs no branch.
 struct Code {
   float lnMag = 0.f;
-  float wCentre = 0.f, wA = 0.f, wB = 0.f;  // shares of centre, outer bin a, outer bin a+1
-  uint8_t a = 0;                            // outer bin index (0..kOrientBins-1)
+  float wCentre = 0.f, wA = 0.f, wB = 0.f;  // shares of bin 0, bin binA, bin binB
+  uint8_t binA = kInvalidBin;               // outer bin a + 1 (or kInvalidBin)
+  uint8_t binB = kInvalidBin;               // outer bin a + 2, wrapped (or kInvalidBin)
   uint8_t angleIdx = 0;                     // table row
   uint8_t magIdx = 0;                       // table column
-  uint8_t valid = 0;
+  bool valid() const { return binA != kInvalidBin; }
 };
 
 // Quantised log-magnitude: from the float bits of m^2 (exponent + top mantissa bit),
 // i.e. steps of a quarter octave of m; exact and the same on every platform.
-int magIndex(float mag, FeatureKind kind);
+inline int magIndexSq(float mag2, FeatureKind kind) {
+  const float minMag = binning(kind).minMag;
+  const int base = static_cast<int>(fmath::floatBits(minMag * minMag) >> 22);
+  const int i = static_cast<int>(fmath::floatBits(mag2) >> 22) - base;
+  return i < 0 ? 0 : (i >= kLutMags ? kLutMags - 1 : i);
+}
+inline int magIndex(float mag, FeatureKind kind) {
+  return magIndexSq(mag * mag, kind);
+}
 float magOfIndex(int idx, FeatureKind kind);  // the cell's representative magnitude
-int angleIndex(float angleRad);
+
+// Sector of the angle of (x, y): kLutAngles sectors of (nearly) equal width. Octant by
+// signs and |x| < |y|, then 4 sub-sectors from the ratio min/max through a 64-step
+// table of atan (boundaries within 1/64 of the ratio of exact ones). No atan, one
+// division; training and particles both use it, so the split is consistent.
+struct AngleSectors {
+  uint8_t sub[65];
+  constexpr AngleSectors() : sub() {
+    // tan(k * 11.25 deg), k = 1..3: ratio thresholds of the 4 sub-sectors of an octant.
+    constexpr float kTan[3] = {0.19891237f, 0.41421356f, 0.66817864f};
+    for (int i = 0; i <= 64; ++i) {
+      const float r = (static_cast<float>(i) + 0.5f) / 64.f;
+      sub[i] = static_cast<uint8_t>((r > kTan[0]) + (r > kTan[1]) + (r > kTan[2]));
+    }
+  }
+};
+inline constexpr AngleSectors kAngleSectors{};
+
+inline int angleIndex(float x, float y) {
+  static_assert(kLutAngles == 32, "4 sectors per octant");
+  const float ax = x < 0.f ? -x : x, ay = y < 0.f ? -y : y;
+  const bool steep = ay > ax;
+  const float mx = steep ? ay : ax, mn = steep ? ax : ay;
+  const int r = mx > 0.f ? static_cast<int>(mn * 64.f / mx) : 0;  // [0, 64]
+  const int s = kAngleSectors.sub[r];
+  const int inQuadrant = steep ? 7 - s : s;  // 0..7 from the x axis
+  if (y >= 0.f) return x >= 0.f ? inQuadrant : 15 - inQuadrant;
+  return x < 0.f ? 16 + inQuadrant : 31 - inQuadrant;
+}
 Code encode(const Response& r, FeatureKind kind);
+
+// Bin shares of every table cell (its centre angle and representative magnitude),
+// per kind: built once, so baking a weak classifier is table lookups.
+struct ShareTable {
+  float wCentre[kNumFeatureKinds][kLutCells];
+  float wA[kNumFeatureKinds][kLutCells];
+  float wB[kNumFeatureKinds][kLutCells];
+  uint8_t a[kNumFeatureKinds][kLutCells];
+  void build();
+};
 
 class WeakClassifier {
  public:
-  // Fits to n coded responses with boosting weights w and labels y (+1 / -1), then bakes.
-  void fit(const Code* codes, const float* w, const int8_t* y, int n, FeatureKind kind);
+  // Fits to n coded responses with boosting weights w and labels y (+1 / -1), then bakes
+  // (with `shares` when given, else computing each cell's shares).
+  void fit(const Code* codes, const float* w, const int8_t* y, int n, FeatureKind kind,
+           const ShareTable* shares = nullptr);
   float predict(const Code& c) const {
-    return c.valid ? _lut[c.angleIdx * kLutMags + c.magIdx] : _invalid;
+    return c.valid() ? _lut[c.angleIdx * kLutMags + c.magIdx] : _invalid;
   }
   float predict(const Response& r) const {
     if (!r.valid) return _invalid;
-    return _lut[angleIndex(r.angle) * kLutMags + magIndex(r.mag, _kind)];
+    return _lut[angleIndex(r.x, r.y) * kLutMags + magIndexSq(r.magSquared(), _kind)];
   }
   FeatureKind kind() const { return _kind; }
 

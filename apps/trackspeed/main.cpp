@@ -1,0 +1,137 @@
+// Tracker speed on a synthetic scene: median update time (and per-stage split) over a
+// run, or, with --icount, the same run without reading any clock so that
+// qemu-icount's count for N frames minus the count for 0 frames, / N, is the exact
+// per-frame instruction count.
+//   cuetrack-trackspeed [--preset 2.1] [--scene moving] [--frames 150] [--particles N]
+//                       [--weak M] [--icount]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+
+#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/drivers/SyntheticSource.hpp"
+
+using namespace cuetrack;
+
+namespace {
+
+class SteadyClock final : public Clock {
+ public:
+  uint64_t nowUs() const override {
+    return static_cast<uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
+                                     std::chrono::steady_clock::now().time_since_epoch())
+                                     .count());
+  }
+};
+
+Tracker tracker;
+// Frames are rendered before timing (rendering is not the tracker's cost) and played
+// forwards then backwards, so any number of frames keeps a continuous motion.
+constexpr int kRendered = 40;
+FrameSlot slots[kRendered];
+alignas(SyntheticSource) unsigned char sourceStorage[sizeof(SyntheticSource)];
+constexpr int kMaxFrames = 2000;
+uint32_t totalUs[kMaxFrames], featuresUs[kMaxFrames], predictUs[kMaxFrames], weighUs[kMaxFrames],
+    learnUs[kMaxFrames];
+
+double median(uint32_t* v, int n) {
+  if (n == 0) return 0;
+  std::sort(v, v + n);
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+int usage() {
+  std::fprintf(stderr,
+               "usage: cuetrack-trackspeed [--preset NAME] [--scene NAME] [--frames N] "
+               "[--particles N] [--weak M] [--icount]\n");
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* presetName = "2.1";
+  const char* scene = "moving";
+  int frames = 150, particles = -1, weak = -1;
+  bool icount = false;
+  for (int i = 1; i < argc; ++i) {
+    const char* a = argv[i];
+    const bool more = i + 1 < argc;
+    if (!std::strcmp(a, "--preset") && more)
+      presetName = argv[++i];
+    else if (!std::strcmp(a, "--scene") && more)
+      scene = argv[++i];
+    else if (!std::strcmp(a, "--frames") && more)
+      frames = std::atoi(argv[++i]);
+    else if (!std::strcmp(a, "--particles") && more)
+      particles = std::atoi(argv[++i]);
+    else if (!std::strcmp(a, "--weak") && more)
+      weak = std::atoi(argv[++i]);
+    else if (!std::strcmp(a, "--icount"))
+      icount = true;
+    else
+      return usage();
+  }
+  Preset preset;
+  if (!parsePreset(presetName, &preset)) {
+    std::fprintf(stderr, "cuetrack-trackspeed: unknown preset '%s'\n", presetName);
+    return 2;
+  }
+  if (frames < 0 || frames + 1 > kMaxFrames) {
+    std::fprintf(stderr, "cuetrack-trackspeed: --frames must be in [0, %d]\n", kMaxFrames - 1);
+    return 2;
+  }
+  SceneSpec spec;
+  if (!makeScene(scene, &spec)) {
+    std::fprintf(stderr, "cuetrack-trackspeed: unknown scene '%s'\n", scene);
+    return 2;
+  }
+  spec.frameCount = kRendered;
+  SyntheticSource* src = new (sourceStorage) SyntheticSource(spec, 1);
+  TrackerConfig cfg = presetConfig(preset);
+  if (particles > 0) cfg.numParticles = particles;
+  if (weak > 0) cfg.numWeakClassifiers = weak;
+  static SteadyClock clock;
+  tracker.configure(cfg, 1, icount ? nullptr : &clock);
+  for (int i = 0; i < kRendered; ++i) {
+    if (src->next(slots[i]) != ReadStatus::Ok) {
+      std::fprintf(stderr, "cuetrack-trackspeed: %s\n", src->error());
+      return 1;
+    }
+  }
+  const InitError e = tracker.init(slots[0].frame(), slots[0].groundTruth);
+  if (e != InitError::None) {
+    std::fprintf(stderr, "cuetrack-trackspeed: init: %s\n", toString(e));
+    return 1;
+  }
+  int n = 0, learned = 0;
+  while (n < frames) {
+    const int period = 2 * (kRendered - 1);
+    const int k = (n + 1) % period;
+    Frame f = slots[k < kRendered ? k : period - k].frame();
+    f.timeUs = static_cast<uint64_t>(n + 1) * 33333u;  // time always runs forwards
+    const TrackResult r = tracker.update(f);
+    learned += r.learned ? 1 : 0;
+    totalUs[n] = r.timesUs.total;
+    featuresUs[n] = r.timesUs.features;
+    predictUs[n] = r.timesUs.predict;
+    weighUs[n] = r.timesUs.weigh;
+    learnUs[n] = r.timesUs.learn;
+    ++n;
+  }
+  if (icount) {
+    std::printf("frames %d learned %d (run under qemu-icount; no clock read)\n", n, learned);
+    return 0;
+  }
+  std::printf(
+      "preset %s scene %s %dx%d frames %d particles %d weak %d learned %d\n"
+      "median update %.0f us (features %.0f, predict %.0f, weigh %.0f, learn %.0f); "
+      "tracker sizeof %zu B\n",
+      presetName, scene, spec.width, spec.height, n, cfg.numParticles, cfg.numWeakClassifiers,
+      learned, median(totalUs, n), median(featuresUs, n), median(predictUs, n), median(weighUs, n),
+      median(learnUs, n), sizeof(Tracker));
+  return 0;
+}
