@@ -24,8 +24,6 @@ class CuetrackBench final : public BenchTracker {
     const InitError e = t.init(f.frame(), box);
     if (e == InitError::None) return true;
     *err = std::string("cannot run: init failed: ") + toString(e);
-    if (e == InitError::NoDepth) *err += " (configuration ";
-    if (e == InitError::NoDepth) *err += presetName(_preset) + std::string(" needs depth)");
     return false;
   }
 

@@ -77,6 +77,22 @@ void textAccuracyTable(std::string& out, const std::vector<EntryResult>& entries
   }
 }
 
+// Failed sequences once each, then every tracker that could not run, with the reason.
+std::string notRunList(const std::vector<EntryResult>& entries, const char* bullet) {
+  std::string out;
+  const auto& seqs = entries.front().sequences;
+  for (size_t i = 0; i < seqs.size(); ++i)
+    if (!seqs[i].ran && std::string(notRunCell(seqs[i])) == "failed")
+      appendf(out, "%s%s: %s\n", bullet, seqs[i].name.c_str(), seqs[i].error.c_str());
+  for (const EntryResult& e : entries)
+    for (const SequenceResult& s : e.sequences)
+      if (!s.ran && std::string(notRunCell(s)) != "failed")
+        appendf(out, "%s%s on %s: %s\n", bullet, e.label().c_str(), s.name.c_str(),
+                s.error.c_str());
+  if (out.empty()) return out;
+  return std::string(bullet[0] == '-' ? "\nNot run:\n\n" : "\nNot run:\n") + out;
+}
+
 }  // namespace
 
 double speedRatio(const EntryResult& entry, const EntryResult& reference) {
@@ -108,7 +124,7 @@ std::string textReport(const std::vector<EntryResult>& entries) {
           "features", "predict", "weigh", "learn", "allocs/run", "xKCF", "xCSRT");
   for (const EntryResult& e : entries) {
     if (e.sequencesRan() == 0) {
-      appendf(out, "%-22s cannot run on any sequence\n", fit(e.label(), 22).c_str());
+      appendf(out, "%-22s not run on any sequence\n", fit(e.label(), 22).c_str());
       continue;
     }
     const Figures a = e.average();
@@ -120,14 +136,7 @@ std::string textReport(const std::vector<EntryResult>& entries) {
             kcf ? num(speedRatio(e, *kcf), 2).c_str() : "-",
             csrt ? num(speedRatio(e, *csrt), 2).c_str() : "-");
   }
-  bool anyError = false;
-  for (const EntryResult& e : entries)
-    for (const SequenceResult& s : e.sequences)
-      if (!s.ran) {
-        if (!anyError) out += "\nNot run:\n";
-        anyError = true;
-        appendf(out, "  %s on %s: %s\n", e.label().c_str(), s.name.c_str(), s.error.c_str());
-      }
+  out += notRunList(entries, "  ");
   return out;
 }
 
@@ -217,7 +226,7 @@ std::string markdownReport(const std::vector<EntryResult>& entries, PaperReferen
   out += " allocs / run | x KCF | x CSRT |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const EntryResult& e : entries) {
     if (e.sequencesRan() == 0) {
-      appendf(out, "| %s | cannot run | | | | | | | | |\n", e.label().c_str());
+      appendf(out, "| %s | not run | | | | | | | | |\n", e.label().c_str());
       continue;
     }
     const Figures a = e.average();
@@ -253,14 +262,7 @@ std::string markdownReport(const std::vector<EntryResult>& entries, PaperReferen
     }
   }
 
-  bool anyError = false;
-  for (const EntryResult& e : entries)
-    for (const SequenceResult& s : e.sequences)
-      if (!s.ran) {
-        if (!anyError) out += "\nNot run:\n\n";
-        anyError = true;
-        appendf(out, "- %s on %s: %s\n", e.label().c_str(), s.name.c_str(), s.error.c_str());
-      }
+  out += notRunList(entries, "- ");
   return out;
 }
 

@@ -25,6 +25,18 @@ constexpr uint64_t kSceneSeed = 1;
 
 std::unique_ptr<FrameSource> openSequence(const SequenceArg& arg, const Options& options,
                                           std::string* err) {
+#if CUETRACK_BENCH_HAVE_READERS
+  // Every format, synth:<scene> included, through the project's one factory.
+  SourceOptions so;
+  so.skipBadFrames = options.skipBadFrames;
+  so.gtPath = arg.gtPath.empty() ? nullptr : arg.gtPath.c_str();
+  so.maxFrames = options.maxFrames > 0 ? options.maxFrames : -1;
+  so.seed = kSceneSeed;
+  char buf[512] = "";
+  std::unique_ptr<FrameSource> source = openFrameSource(arg.spec.c_str(), so, buf, sizeof buf);
+  if (!source) *err = buf[0] ? buf : arg.spec + ": cannot open";
+  return source;
+#else
   if (arg.spec.rfind("synth:", 0) == 0) {
 #if !CUETRACK_BENCH_HAVE_SYNTH
     *err = arg.spec + ": this build has no synthetic scenes (drivers/synth)";
@@ -43,9 +55,6 @@ std::unique_ptr<FrameSource> openSequence(const SequenceArg& arg, const Options&
     return std::make_unique<SyntheticSource>(spec, kSceneSeed);
 #endif
   }
-#if CUETRACK_BENCH_HAVE_READERS
-  return openRecordedSequence(arg, options, err);
-#else
   *err = arg.spec + ": this build has no recorded-sequence readers (drivers/recorded)";
   return nullptr;
 #endif
