@@ -379,3 +379,17 @@ TEST_CASE("the status line reports frames, fps, dropped frames, state and the li
   CHECK(rig.reporter.countContaining(
             "frame 31 fps 30.0 dropped 7 state tracking | serial up sent 31 ") == 1);
 }
+
+TEST_CASE("without a serial link, the run ends once every output has failed") {
+  static FakeClock clock;
+  static MemoryReporter reporter;
+  static MemorySink sink;
+  static TinySource source(10, true);
+  static StubTracker tracker;
+  static Pipeline pipeline(source, Rig::slot(), tracker, clock, reporter, PipelineOptions{});
+  pipeline.addSink(&sink);
+  REQUIRE(pipeline.step() == StepResult::Continue);
+  sink.setFailing(true);
+  REQUIRE(pipeline.step() == StepResult::OutputsGone);
+  CHECK(pipeline.outputFailed());
+}

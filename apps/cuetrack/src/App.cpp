@@ -89,10 +89,11 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   if (!opt.quiet) {
     std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
                   static_cast<unsigned>(pipeline.frames()),
-                  platform::stopRequested()  ? "signal"
-                  : r == StepResult::Stopped ? "STOP command"
-                  : r == StepResult::Done    ? "end of source or --frames"
-                                             : "error");
+                  platform::stopRequested()      ? "signal"
+                  : r == StepResult::Stopped     ? "STOP command"
+                  : r == StepResult::Done        ? "end of source or --frames"
+                  : r == StepResult::OutputsGone ? "every output failed"
+                                                 : "error");
     reporter.report(err);
   }
   switch (r) {

@@ -147,6 +147,11 @@ StepResult Pipeline::step() {
   ++_frames;
   emit(msg);
   statusLine();
+  if (!_link && _numSinks > 0) {
+    bool anyOk = false;
+    for (int i = 0; i < _numSinks; ++i) anyOk = anyOk || _sinkOk[i];
+    if (!anyOk) return StepResult::OutputsGone;
+  }
   return StepResult::Continue;
 }
 

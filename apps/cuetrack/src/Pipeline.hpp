@@ -30,6 +30,7 @@ enum class StepResult : uint8_t {
   Stopped,      // STOP command
   SourceError,  // reported
   BoxRejected,  // --box refused by the tracker (reported)
+  OutputsGone,  // every output failed and there is no serial link: nothing left to feed
 };
 
 class Pipeline final : public AppControl {
