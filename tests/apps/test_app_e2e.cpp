@@ -343,8 +343,8 @@ TEST_CASE("when the serial peer goes away the app reports it, keeps tracking, re
   REQUIRE(pty.start());
   const std::string appErr = tmp.file("app.err"), appCsv = tmp.file("app.csv");
   ChildProcess app;
-  const char* aargv[] = {CUETRACK_APP_BIN, "--serial", pty.a(),   "--out",   appCsv.c_str(),
-                         "--frames",       "100000",   "--no-gt", "--quiet", nullptr};
+  const char* aargv[] = {CUETRACK_APP_BIN, "--serial", pty.a(),   "--out", appCsv.c_str(),
+                         "--frames",       "100000",   "--quiet", nullptr};
   REQUIRE(app.start(aargv, nullptr, appErr.c_str()));
   {
     HostPort host;
@@ -356,7 +356,9 @@ TEST_CASE("when the serial peer goes away the app reports it, keeps tracking, re
                   30000));
   REQUIRE(app.running());
   const size_t rowsBefore = lines(slurp(appCsv)).size();
-  REQUIRE(waitFor([&] { return lines(slurp(appCsv)).size() > rowsBefore + 5; }, 30000));
+  REQUIRE(waitFor([&] { return lines(slurp(appCsv)).size() > rowsBefore + 5; }, 60000));
+  // Still tracking (target from the scene's ground truth), not just reading frames.
+  CHECK(lines(slurp(appCsv))[rowsBefore + 2].find(",tracking,") != std::string::npos);
 
   REQUIRE(pty.start());
   REQUIRE(waitFor([&] { return slurp(appErr).find("reconnected") != std::string::npos; }, 30000));
