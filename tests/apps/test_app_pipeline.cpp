@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "AllocCounter.hpp"
 #include "Pipeline.hpp"
 #include "SerialLink.hpp"
 #include "cuetrack/platform/fake/FakeClock.hpp"
@@ -392,4 +393,27 @@ TEST_CASE("without a serial link, the run ends once every output has failed") {
   sink.setFailing(true);
   REQUIRE(pipeline.step() == StepResult::OutputsGone);
   CHECK(pipeline.outputFailed());
+}
+
+TEST_CASE("steady-state frames, commands and replies allocate nothing") {
+  PipelineOptions o;
+  o.statusPeriodUs = 1000000;
+  static Rig rig(400, true, o);
+  REQUIRE(rig.step() == StepResult::Continue);  // first frame: target set up
+  ctp_command_t rate = command(CTP_CMD_SET_RATE, 1);
+  rate.rate_hz = 15;
+  uint8_t wire[CTP_MAX_WIRE];
+  const size_t n = ctp_encode_command(&rate, wire, sizeof wire);
+  uint8_t drained[4096];
+  cuetrack::test::AllocScope scope;
+  for (int i = 0; i < 300; ++i) {
+    if (i % 50 == 0) rig.cable.b().write(wire, n);
+    REQUIRE(rig.step() == StepResult::Continue);
+    rig.cable.b().read(drained, sizeof drained, 0);  // the host keeps up
+  }
+  CHECK(scope.allocations() == 0);
+  CHECK(rig.link.stats().rxFrames == 6);
+  cuetrack::test::AllocScope control;  // positive control: the counter sees allocations
+  std::vector<int> v(10);
+  CHECK(control.allocations() >= 1);
 }
