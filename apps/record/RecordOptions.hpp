@@ -1,0 +1,31 @@
+// Command line of cuetrack-record, parsed into plain values (no allocation, testable).
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+
+#include "cuetrack/drivers/KinectSource.hpp"
+
+namespace cuetrack::record {
+
+// Exit codes (also printed by --help).
+inline constexpr int kExitOk = 0;      // limit reached, stopped by SIGINT/SIGTERM, or replay ended
+inline constexpr int kExitUsage = 1;   // bad command line
+inline constexpr int kExitDevice = 2;  // no Kinect, cannot open it, or the stream failed mid-run
+inline constexpr int kExitOutput = 3;  // cannot write the recording
+
+struct Options {
+  const char* outDir = nullptr;
+  int maxFrames = 0;        // 0 = no limit
+  double maxSeconds = 0.0;  // [s] of camera time; 0 = no limit
+  bool list = false;
+  bool quiet = false;
+  KinectOptions kinect{};
+};
+
+enum class ParseResult { Ok, Help, Error };
+
+ParseResult parse(int argc, char** argv, Options* out, char* err, std::size_t errLen);
+void usage(std::FILE* to);
+
+}  // namespace cuetrack::record

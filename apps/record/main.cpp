@@ -1,0 +1,120 @@
+// cuetrack-record: Kinect -> fakenect recording (INDEX.txt, r-*.ppm, d-*.pgm), with a
+// frame-count or duration limit and a progress line. Exit codes are in usage().
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "RecordOptions.hpp"
+#include "cuetrack/drivers/FakenectWriter.hpp"
+#include "cuetrack/drivers/KinectSource.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
+
+using namespace cuetrack;
+
+namespace {
+
+// Large: static storage, never the stack.
+KinectSource gKinect;
+FrameSlot gSlot;
+FakenectWriter gWriter;
+
+int listDevices() {
+  char err[160];
+  const int n = countKinects(err, sizeof err);
+  if (n < 0) {
+    std::fprintf(stderr, "cuetrack-record: %s\n", err);
+    return record::kExitDevice;
+  }
+  std::printf("%d Kinect%s found\n", n, n == 1 ? "" : "s");
+  if (n > 0 && !kinectReplayLibraryLoaded()) {
+    static char serials[16][kKinectSerialLen];
+    const int m = listKinectSerials(serials, 16, err, sizeof err);
+    for (int i = 0; i < m; ++i) std::printf("  #%d serial %s\n", i, serials[i]);
+  }
+  return record::kExitOk;
+}
+
+void progress(const record::Options& opt, int frames, double seconds, bool final) {
+  const KinectStats s = gKinect.stats();
+  char limit[32] = "";
+  if (opt.maxFrames > 0) std::snprintf(limit, sizeof limit, "/%d", opt.maxFrames);
+  std::fprintf(stderr, "\rrecording %s: %d%s frames, %.1f s, dropped %llu, unpaired %llu%s",
+               opt.outDir, frames, limit, seconds, static_cast<unsigned long long>(s.dropped),
+               static_cast<unsigned long long>(s.unpaired), final ? "\n" : "   ");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  record::Options opt;
+  char err[256];
+  const record::ParseResult parsed = record::parse(argc, argv, &opt, err, sizeof err);
+  if (parsed == record::ParseResult::Help) {
+    record::usage(stdout);
+    return record::kExitOk;
+  }
+  if (parsed == record::ParseResult::Error) {
+    std::fprintf(stderr, "cuetrack-record: %s (see --help)\n", err);
+    return record::kExitUsage;
+  }
+  if (opt.list) return listDevices();
+
+  platform::installStopSignals();
+  opt.kinect.stopRequested = &platform::stopRequested;
+  if (!gKinect.open(opt.kinect)) {
+    std::fprintf(stderr, "cuetrack-record: %s\n", gKinect.error());
+    return record::kExitDevice;
+  }
+  if (!opt.quiet)
+    std::fprintf(stderr, "cuetrack-record: %s, streams %s, USB load %.1f MB/s%s\n", gKinect.name(),
+                 toString(gKinect.streams()), kinectUsbLoadMBps(gKinect.streams()),
+                 gKinect.streams() == KinectStreams::Both
+                     ? " (Pi-class boards carry ~15-20 MB/s: see docs/kinect.md if frames drop)"
+                     : "");
+  if (!gWriter.open(opt.outDir)) {
+    std::fprintf(stderr, "cuetrack-record: %s\n", gWriter.error());
+    gKinect.close();
+    return record::kExitOutput;
+  }
+
+  int frames = 0;
+  double seconds = 0.0;
+  uint64_t lastProgressUs = 0;
+  int exitCode = record::kExitOk;
+  for (;;) {
+    if (opt.maxFrames > 0 && frames >= opt.maxFrames) break;
+    const ReadStatus st = gKinect.next(gSlot);
+    if (st == ReadStatus::End) break;
+    if (st == ReadStatus::Error) {
+      if (!opt.quiet) progress(opt, frames, seconds, true);
+      std::fprintf(stderr, "cuetrack-record: %s\n", gKinect.error());
+      exitCode = record::kExitDevice;
+      break;
+    }
+    // Duration on the camera clock: deterministic, and what the recording will replay.
+    seconds = static_cast<double>(gSlot.timeUs) / 1e6;
+    if (opt.maxSeconds > 0.0 && seconds >= opt.maxSeconds) break;
+    if (!gWriter.write(gSlot)) {
+      if (!opt.quiet) progress(opt, frames, seconds, true);
+      std::fprintf(stderr, "cuetrack-record: %s\n", gWriter.error());
+      exitCode = record::kExitOutput;
+      break;
+    }
+    ++frames;
+    if (!opt.quiet && (frames == 1 || gSlot.timeUs - lastProgressUs >= 500000)) {
+      lastProgressUs = gSlot.timeUs;
+      progress(opt, frames, seconds, false);
+    }
+  }
+  gKinect.close();
+  if (!gWriter.close() && exitCode == record::kExitOk) {
+    std::fprintf(stderr, "cuetrack-record: %s\n", gWriter.error());
+    exitCode = record::kExitOutput;
+  }
+  if (!opt.quiet) progress(opt, frames, seconds, true);
+  if (exitCode == record::kExitOk && frames == 0) {
+    std::fprintf(stderr, "cuetrack-record: no frame recorded\n");
+    exitCode = record::kExitDevice;
+  }
+  return exitCode;
+}

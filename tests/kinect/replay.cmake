@@ -1,0 +1,103 @@
+# Included by tests/kinect/CMakeLists.txt: the live code path through fakenect, and
+# cuetrack-record.
+# ---- How to run a program of this build, plain or under fakenect -----------------
+# Host: LD_LIBRARY_PATH=<fakenect dir> in the test's environment. Cross builds run
+# under qemu-user, whose emulator line sets the guest's LD_LIBRARY_PATH itself
+# (toolchains/cross-common.cmake): prepend the target's fakenect dir to that -E value
+# (a copy of the line; the toolchain file stays as it is).
+set(_fakenect_dir /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/fakenect)
+set(_run_plain "")
+set(_run_fakenect "")
+set(_fakenect_env "")
+if(CMAKE_CROSSCOMPILING)
+  set(_run_plain ${CMAKE_CROSSCOMPILING_EMULATOR})
+  set(_run_fakenect ${CMAKE_CROSSCOMPILING_EMULATOR})
+  set(_patched OFF)
+  foreach(_arg IN LISTS CMAKE_CROSSCOMPILING_EMULATOR)
+    if(_arg MATCHES "^LD_LIBRARY_PATH=")
+      set(_patched ON)
+    endif()
+  endforeach()
+  if(_patched)
+    list(TRANSFORM _run_fakenect REPLACE "^LD_LIBRARY_PATH=" "LD_LIBRARY_PATH=${_fakenect_dir}:")
+  else()
+    list(APPEND _run_fakenect -E LD_LIBRARY_PATH=${_fakenect_dir})
+  endif()
+else()
+  set(_fakenect_env "LD_LIBRARY_PATH=${_fakenect_dir}")
+endif()
+
+if(NOT EXISTS ${_fakenect_dir}/libfreenect.so.0.5 OR (CMAKE_CROSSCOMPILING AND NOT CMAKE_CROSSCOMPILING_EMULATOR))
+  message(STATUS "fakenect not usable for ${CMAKE_LIBRARY_ARCHITECTURE} (${_fakenect_dir}): "
+                 "Kinect replay tests skipped (install libfreenect-bin / libfreenect0.5:<arch>)")
+  return()
+endif()
+if(NOT TARGET cuetrack_recorded OR NOT TARGET cuetrack_synth)
+  message(STATUS "Kinect replay tests skipped: need cuetrack_recorded and cuetrack_synth")
+  return()
+endif()
+
+# ---- Recordings, generated at test time (fixture) ----------------------------------
+set(_rec ${CMAKE_CURRENT_BINARY_DIR}/recordings)
+add_executable(make_fakenect_recording make_fakenect_recording.cpp)
+target_link_libraries(make_fakenect_recording PRIVATE cuetrack_recorded cuetrack_synth cuetrack_warnings)
+# 12 frames of a moving target; and 8 frames with a 1.5 s pause after frame 3 (a stall).
+add_test(NAME kinect_make_recordings
+         COMMAND ${CMAKE_COMMAND} -E rm -rf ${_rec})
+add_test(NAME kinect_make_recording_moving
+         COMMAND make_fakenect_recording ${_rec}/moving moving 12)
+add_test(NAME kinect_make_recording_stall
+         COMMAND make_fakenect_recording ${_rec}/stall moving 8 4 1500)
+set_tests_properties(kinect_make_recordings PROPERTIES FIXTURES_SETUP kinect_clean LABELS kinect)
+set_tests_properties(kinect_make_recording_moving kinect_make_recording_stall PROPERTIES
+  FIXTURES_SETUP kinect_recordings FIXTURES_REQUIRED kinect_clean LABELS kinect TIMEOUT 300)
+
+# ---- Replay tests: one process per case (fakenect's state is global) ----------------
+add_executable(test_kinect_replay test_kinect_replay.cpp)
+target_link_libraries(test_kinect_replay PRIVATE cuetrack_test_main cuetrack_kinect cuetrack_recorded
+                      cuetrack::core cuetrack_alloc_counter cuetrack_warnings)
+
+function(kinect_replay_test name tag recording)
+  add_test(NAME ${name} COMMAND ${_run_fakenect} $<TARGET_FILE:test_kinect_replay> "${tag}")
+  set_tests_properties(${name} PROPERTIES
+    ENVIRONMENT "FAKENECT_PATH=${recording};CUETRACK_SHARED_DIR=${CUETRACK_SHARED_DIR};${_fakenect_env};${ARGN}"
+    FIXTURES_REQUIRED kinect_recordings LABELS "kinect;fakenect" TIMEOUT 300)
+endfunction()
+
+kinect_replay_test(kinect_replay_delivers "[delivers]" ${_rec}/moving)
+kinect_replay_test(kinect_replay_tracks "[tracks]" ${_rec}/moving)
+kinect_replay_test(kinect_replay_stall "[stall]" ${_rec}/stall)
+kinect_replay_test(kinect_replay_stop "[stop]" ${_rec}/moving)
+kinect_replay_test(kinect_replay_depth_only "[depth-only]" ${_rec}/moving)
+kinect_replay_test(kinect_replay_colour_only "[colour-only]" ${_rec}/moving)
+kinect_replay_test(kinect_replay_misuse "[misuse]" ${_rec}/moving)
+
+# ---- cuetrack-record ---------------------------------------------------------------
+if(NOT TARGET cuetrack-record)
+  return()
+endif()
+set(_expect ${CMAKE_CURRENT_SOURCE_DIR}/run_expect.cmake)
+function(kinect_record_test name run rc)
+  list(JOIN run "|" _cmd)
+  add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} "-DCMD=${_cmd}" -DEXPECT_RC=${rc} ${ARGN} -P ${_expect})
+  set_tests_properties(${name} PROPERTIES LABELS kinect TIMEOUT 300)
+endfunction()
+set(_record $<TARGET_FILE:cuetrack-record>)
+
+kinect_record_test(kinect_record_help "${_run_plain};${_record};--help" 0
+                   "-DEXPECT_OUT=usage: cuetrack-record.*Exit codes")
+kinect_record_test(kinect_record_bad_args "${_run_plain};${_record};--out;x;--frames;zero" 1
+                   -DONE_LINE_ERR=ON "-DEXPECT_ERR=--frames")
+# This machine has no Kinect: one clear line and exit code 2 (skip where one is plugged in).
+kinect_record_test(kinect_record_no_kinect
+                   "${_run_plain};${_record};--frames;1;--out;${CMAKE_CURRENT_BINARY_DIR}/no-kinect" 2
+                   -DONE_LINE_ERR=ON "-DEXPECT_ERR=no Kinect found")
+# Record a fakenect replay with cuetrack-record, then compare the copy with the original.
+kinect_record_test(kinect_record_replay
+                   "${_run_fakenect};${_record};--out;${_rec}/copy" 0
+                   "-DEXPECT_ERR=12 frames" -DCLEAN_DIR=${_rec}/copy)
+set_tests_properties(kinect_record_replay PROPERTIES
+  ENVIRONMENT "FAKENECT_PATH=${_rec}/moving;${_fakenect_env}"
+  FIXTURES_REQUIRED kinect_recordings FIXTURES_SETUP kinect_copy)
+kinect_replay_test(kinect_record_copy_matches "[copy]" ${_rec}/moving "CUETRACK_KINECT_COPY=${_rec}/copy")
+set_tests_properties(kinect_record_copy_matches PROPERTIES FIXTURES_REQUIRED "kinect_recordings;kinect_copy")
