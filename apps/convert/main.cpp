@@ -1,5 +1,5 @@
-// cuetrack-convert (built by apps/synth/CMakeLists.txt): converts any frame source (see --help) to a fakenect recording or
-// an RGB-D folder, or measures how fast a source reads (--bench).
+// cuetrack-convert (built by apps/synth/CMakeLists.txt): converts any frame source (see --help) to
+// a fakenect recording or an RGB-D folder, or measures how fast a source reads (--bench).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -19,18 +19,21 @@ constexpr int kExitFailed = 1;
 FrameSlot gSlot;  // 1.5 MiB: static storage
 
 void usage(FILE* f) {
-  std::fprintf(f,
-               "usage: cuetrack-convert SOURCE --out DIR [--format fakenect|rgbd] [options]\n"
-               "       cuetrack-convert SOURCE --bench [options]\n"
-               "SOURCE is one of:\n%s"
-               "options:\n"
-               "  --frames N        at most N frames\n"
-               "  --seed S          seed of synthetic scenes\n"
-               "  --gt PATH         ground truth overriding the source's own\n"
-               "  --skip-bad        skip unreadable frames (counted) instead of stopping\n"
-               "  --bench           read every frame, print frames/s (nothing written)\n"
-               "exit: 0 ok, 1 read/write failed, 2 bad arguments\n",
-               frameSourceHelp());
+  std::fprintf(
+      f,
+      "usage: cuetrack-convert SOURCE --out DIR [--format fakenect|rgbd|otb|avi] [options]\n"
+      "       cuetrack-convert SOURCE --bench [options]\n"
+      "SOURCE is one of:\n%s"
+      "options:\n"
+      "  --frames N        at most N frames\n"
+      "  --seed S          seed of synthetic scenes\n"
+      "  --gt PATH         ground truth overriding the source's own\n"
+      "  --skip-bad        skip unreadable frames (counted) instead of stopping\n"
+      "  --bench           read every frame, print frames/s (nothing written)\n"
+      "formats: fakenect (default), rgbd (RGB-D folder), otb (OTB folder, colour),\n"
+      "         avi (BoBoT-style MJPG video; --out is the .avi path)\n"
+      "exit: 0 ok, 1 read/write failed, 2 bad arguments\n",
+      frameSourceHelp());
 }
 
 }  // namespace

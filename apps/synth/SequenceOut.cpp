@@ -44,7 +44,25 @@ std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir
     return nullptr;
 #endif
   }
-  std::snprintf(err, errLen, "unknown format '%s' (fakenect or rgbd)", format);
+#if CUETRACK_HAVE_OPENCV
+  if (std::strcmp(format, "otb") == 0) {
+    auto o = std::make_unique<Out<OtbFolderWriter>>();
+    if (!o->writer.open(dir)) {
+      std::snprintf(err, errLen, "%s", o->writer.error());
+      return nullptr;
+    }
+    return o;
+  }
+  if (std::strcmp(format, "avi") == 0) {
+    auto o = std::make_unique<Out<BobotVideoWriter>>();
+    if (!o->writer.open(dir)) {
+      std::snprintf(err, errLen, "%s", o->writer.error());
+      return nullptr;
+    }
+    return o;
+  }
+#endif
+  std::snprintf(err, errLen, "unknown format '%s' (fakenect, rgbd; otb, avi with OpenCV)", format);
   return nullptr;
 }
 

@@ -1,5 +1,7 @@
 // Writing a sequence in one of the recorded formats, shared by cuetrack-synth and
-// cuetrack-convert. Formats: "fakenect" (everywhere), "rgbd" (host build with OpenCV).
+// cuetrack-convert. Formats: "fakenect" (everywhere); with OpenCV also "rgbd" (RGB-D
+// folder), "otb" (OTB folder, JPEG, colour only) and "avi" (BoBoT-style MJPG video +
+// .gt.txt; `dir` is then the .avi path).
 #pragma once
 
 #include <cstddef>

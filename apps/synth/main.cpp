@@ -19,12 +19,14 @@ FrameSlot gSlot;  // 1.5 MiB: static storage
 
 void usage(FILE* f) {
   std::fprintf(f,
-               "usage: cuetrack-synth --scene NAME --out DIR [--format fakenect|rgbd]\n"
+               "usage: cuetrack-synth --scene NAME --out DIR [--format fakenect|rgbd|otb|avi]\n"
                "                      [--frames N] [--seed S] [--size WxH]\n"
                "       cuetrack-synth --list\n"
                "Writes a synthetic RGB-D sequence with exact ground truth (groundtruth.txt,\n"
                "BoBoT format) as a fakenect recording (default; INDEX.txt, r-/d-/a- files)\n"
-               "or an RGB-D folder (rgb/, depth/ 16-bit PNG mm, intrinsics.txt; needs OpenCV).\n"
+               "or an RGB-D folder (rgb/, depth/ 16-bit PNG mm, intrinsics.txt; needs OpenCV);\n"
+               "otb (img/*.jpg + groundtruth_rect.txt) and avi (MJPG video + .gt.txt, --out is\n"
+               "the .avi path) are colour only, for the RGB benchmarks' formats (need OpenCV).\n"
                "  --scene NAME   one of --list (default frames: 150 at 30 fps)\n"
                "  --frames N     number of frames (1..100000)\n"
                "  --seed S       sensor-noise seed (same seed, same bytes)\n"

@@ -324,3 +324,42 @@ TEST_CASE("real TUM stills: 16-bit PNG depth (value / 5 = mm)", "[opencv][shared
   CHECK_FALSE(loadDepthPng16((dir + "/1.png").c_str(), *depth, err, sizeof err));  // 8-bit colour
   CHECK(std::string(err).find("1.png: not a 16-bit") != std::string::npos);
 }
+
+TEST_CASE("OTB and BoBoT-video writers round-trip the ground truth", "[opencv][otb][bobot]") {
+  TempDir tmp;
+  auto slot = std::make_unique<FrameSlot>();
+  std::vector<Box> truth;
+  {
+    auto src = synth("occlusion", 5);
+    OtbFolderWriter otb;
+    BobotVideoWriter avi;
+    if (!otb.open((tmp / "otb").c_str())) FAIL(otb.error());
+    if (!avi.open((tmp / "Vid_S_synth.avi").c_str(), 30.0)) FAIL(avi.error());
+    while (src->next(*slot) == ReadStatus::Ok) {
+      if (!otb.write(*slot)) FAIL(otb.error());
+      if (!avi.write(*slot)) FAIL(avi.error());
+      truth.push_back(slot->groundTruth);
+    }
+    if (!otb.close()) FAIL(otb.error());
+    if (!avi.close()) FAIL(avi.error());
+  }
+  OtbFolderReader otb;
+  REQUIRE(otb.open((tmp / "otb").c_str()));
+  BobotVideoReader avi;
+  REQUIRE(avi.open((tmp / "Vid_S_synth.avi").c_str()));
+  CHECK(avi.groundTruth().header() == "./Vid_S_synth.avi");
+  CHECK(avi.frameCount() == 5);
+  for (size_t i = 0; i < truth.size(); ++i) {
+    REQUIRE(otb.next(*slot) == ReadStatus::Ok);
+    checkBox(slot->groundTruth, truth[i], 2e-3f);
+    REQUIRE(avi.next(*slot) == ReadStatus::Ok);
+    checkBox(slot->groundTruth, truth[i], 1e-3f);
+    CHECK(slot->timeUs == static_cast<uint64_t>(std::llround(i * 1e6 / 30.0)));
+  }
+  CHECK(otb.next(*slot) == ReadStatus::End);
+  CHECK(avi.next(*slot) == ReadStatus::End);
+  BobotVideoWriter bad;
+  CHECK_FALSE(bad.open((tmp / "x.mp4").c_str()));
+  CHECK(std::string(bad.error()).find("x.mp4: the video name must end in .avi") !=
+        std::string::npos);
+}

@@ -85,6 +85,10 @@ CameraIntrinsics kinectScaled(int w, int h) {
           kKinectV1Intrinsics.cy * sy};
 }
 
+bool endsWithAvi(const std::string& p) {
+  return p.size() > 4 && p.compare(p.size() - 4, 4, ".avi") == 0;
+}
+
 bool gtCountFits(int gt, int frames) {
   return gt == frames || gt == frames - 1;
 }
@@ -369,6 +373,92 @@ bool RgbdFolderWriter::close() {
     return false;
   }
   _gtOpen = false;
+  return true;
+}
+
+// ---- OTB folder writer ----------------------------------------------------------
+
+bool OtbFolderWriter::open(const char* dir) {
+  _dir = dir;
+  _count = 0;
+  _error[0] = '\0';
+  if (!rec::makeDirectories((_dir + "/img").c_str(), _error, sizeof _error)) return false;
+  return _gt.open((_dir + "/groundtruth_rect.txt").c_str(), GtFormat::Otb, nullptr, _error,
+                  sizeof _error);
+}
+
+bool OtbFolderWriter::write(const FrameSlot& frame) {
+  const int w = frame.rgb.width(), h = frame.rgb.height();
+  cv::Mat rgb(h, w, CV_8UC3, const_cast<Rgb8*>(frame.rgb.data())), bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  char path[1024];
+  std::snprintf(path, sizeof path, "%s/img/%04d.jpg", _dir.c_str(), _count + 1);
+  if (!cv::imwrite(path, bgr, {cv::IMWRITE_JPEG_QUALITY, 95})) {
+    std::snprintf(_error, sizeof _error, "%s: cannot write", path);
+    return false;
+  }
+  // OTB has one line per frame: frames without truth get "0,0,0,0".
+  _gt.write(frame.hasGroundTruth ? frame.groundTruth : Box{}, w, h);
+  ++_count;
+  return true;
+}
+
+bool OtbFolderWriter::close() {
+  if (!_gt.close()) {
+    std::snprintf(_error, sizeof _error, "%s/groundtruth_rect.txt: write failed", _dir.c_str());
+    return false;
+  }
+  return true;
+}
+
+// ---- BoBoT video writer -----------------------------------------------------------
+
+struct BobotVideoWriter::Video {
+  cv::VideoWriter writer;
+  cv::Mat bgr;
+};
+
+BobotVideoWriter::BobotVideoWriter() : _video(new Video) {}
+BobotVideoWriter::~BobotVideoWriter() = default;
+
+bool BobotVideoWriter::open(const char* aviPath, double fps) {
+  _path = aviPath;
+  _fps = fps;
+  _count = 0;
+  _error[0] = '\0';
+  if (!endsWithAvi(_path)) {
+    std::snprintf(_error, sizeof _error, "%s: the video name must end in .avi", aviPath);
+    return false;
+  }
+  const std::string gtPath = _path.substr(0, _path.size() - 4) + ".gt.txt";
+  const std::string header = "./" + stem(_path) + ".avi";
+  return _gt.open(gtPath.c_str(), GtFormat::Bobot, header.c_str(), _error, sizeof _error);
+}
+
+bool BobotVideoWriter::write(const FrameSlot& frame) {
+  const int w = frame.rgb.width(), h = frame.rgb.height();
+  if (!_video->writer.isOpened()) {
+    if (!_video->writer.open(_path, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
+                             _fps, cv::Size(w, h))) {
+      std::snprintf(_error, sizeof _error, "%s: cannot create video (MJPG)", _path.c_str());
+      return false;
+    }
+  }
+  cv::Mat rgb(h, w, CV_8UC3, const_cast<Rgb8*>(frame.rgb.data()));
+  cv::cvtColor(rgb, _video->bgr, cv::COLOR_RGB2BGR);
+  _video->writer.write(_video->bgr);
+  // BoBoT has a line per frame from 0; frames without truth are "not visible".
+  _gt.write(frame.hasGroundTruth ? frame.groundTruth : Box{}, w, h);
+  ++_count;
+  return true;
+}
+
+bool BobotVideoWriter::close() {
+  _video->writer.release();
+  if (!_gt.close()) {
+    std::snprintf(_error, sizeof _error, "%s: ground truth write failed", _path.c_str());
+    return false;
+  }
   return true;
 }
 

@@ -103,6 +103,42 @@ class RgbdFolderWriter {
   char _error[512] = "";
 };
 
+// OTB folder: img/0001.jpg ... (JPEG quality 95, colour only) + groundtruth_rect.txt.
+class OtbFolderWriter {
+ public:
+  bool open(const char* dir);
+  bool write(const FrameSlot& frame);
+  bool close();
+  const char* error() const { return _error; }
+
+ private:
+  std::string _dir;
+  GtWriter _gt;
+  int _count = 0;
+  char _error[512] = "";
+};
+
+// BoBoT-style video: PATH.avi (Motion-JPEG, colour only) + PATH.gt.txt (BoBoT format,
+// header "./NAME.avi"). fps is the container's rate.
+class BobotVideoWriter {
+ public:
+  BobotVideoWriter();
+  ~BobotVideoWriter();
+  bool open(const char* aviPath, double fps = 25.0);
+  bool write(const FrameSlot& frame);
+  bool close();
+  const char* error() const { return _error; }
+
+ private:
+  struct Video;
+  std::unique_ptr<Video> _video;
+  std::string _path;
+  GtWriter _gt;
+  double _fps = 25.0;
+  int _count = 0;
+  char _error[512] = "";
+};
+
 // Stills: 16-bit PNG depth (as stored; the caller scales, e.g. TUM's value / 5 = mm)
 // and any colour image OpenCV reads. Sizes up to kMaxImageWidth x kMaxImageHeight.
 bool loadDepthPng16(const char* path, FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight>& out,
