@@ -417,3 +417,13 @@ TEST_CASE("steady-state frames, commands and replies allocate nothing") {
   std::vector<int> v(10);
   CHECK(control.allocations() >= 1);
 }
+
+TEST_CASE("drain waits for room and puts queued messages on the line, bounded") {
+  static Rig rig(50, true);
+  rig.cable.setCapacityAtoB(0);  // the peer reads nothing
+  for (int i = 0; i < 10; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  REQUIRE_FALSE(rig.link.drain(50));  // gives up instead of hanging
+  rig.cable.setCapacityAtoB(FakeSerialCable::kRingBytes);
+  REQUIRE(rig.link.drain(50));
+  CHECK(countType(rig.host.drain(), CTP_MSG_TRACK) == 10);
+}

@@ -85,7 +85,8 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   StepResult r = StepResult::Continue;
   while (r == StepResult::Continue && !platform::stopRequested()) r = pipeline.step();
 
-  if (link) link->service();  // last ACK / track out of the queue
+  if (link && !link->drain(1000))
+    reporter.report("serial: could not send the last messages within 1 s");
   if (!opt.quiet) {
     std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
                   static_cast<unsigned>(pipeline.frames()),

@@ -68,7 +68,7 @@ void Pipeline::serviceLink() {
 StepResult Pipeline::step() {
   serviceLink();
   if (_stopRequested) {
-    if (_link) _link->service();  // push the ACK out before we go
+    if (_link) _link->drain(1000);  // the ACK goes out before we do
     return StepResult::Stopped;
   }
   if (_options.maxFrames >= 0 && static_cast<int64_t>(_frames) >= _options.maxFrames) {

@@ -50,6 +50,14 @@ void SerialLink::service() {
   flush();
 }
 
+bool SerialLink::drain(int maxMs) {
+  // Bounded by iterations, not by the clock: a fake clock in tests does not move.
+  for (int waitedMs = 0; _connected && _txSize > 0 && waitedMs < maxMs; waitedMs += 10) {
+    if (_port.waitWritable(10)) flush();
+  }
+  return _txSize == 0;
+}
+
 void SerialLink::flush() {
   while (_connected && _txSize > 0) {
     const size_t contiguous =

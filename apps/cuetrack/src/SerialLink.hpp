@@ -41,6 +41,9 @@ class SerialLink {
   size_t receive(InboundEvent* events, size_t max);
   // Flushes queued bytes and, while disconnected, retries the device every 0.5 s.
   void service();
+  // At exit: waits (at most ~maxMs) until the queue is on the line, so a last ACK or
+  // track is not lost. Returns true when the queue is empty.
+  bool drain(int maxMs);
 
   // TRACK, subject to the rate limit (by frame time). True when queued.
   bool sendTrack(ctp_track_t track);

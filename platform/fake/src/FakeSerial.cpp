@@ -47,6 +47,12 @@ IoResult FakeSerialCable::End::read(uint8_t* buf, size_t cap, int /*timeoutMs*/)
   return {IoStatus::Ok, n};
 }
 
+bool FakeSerialCable::End::waitWritable(int /*timeoutMs*/) {
+  if (!_open || !_cable->_plugged) return false;
+  const size_t cap = (_out == &_cable->_aToB) ? _cable->_capAtoB : kRingBytes;
+  return _out->size < cap;
+}
+
 IoResult FakeSerialCable::End::write(const uint8_t* data, size_t len) {
   if (!_open || !_cable->_plugged) {
     std::snprintf(_error, sizeof _error, "%s: write failed: peer gone", _name);

@@ -129,6 +129,12 @@ IoResult SerialPort::read(uint8_t* buf, size_t cap, int timeoutMs) {
   return {IoStatus::Ok, 0};
 }
 
+bool SerialPort::waitWritable(int timeoutMs) {
+  if (_fd < 0) return false;
+  pollfd p{_fd, POLLOUT, 0};
+  return ::poll(&p, 1, timeoutMs) > 0 && (p.revents & POLLOUT) != 0;
+}
+
 IoResult SerialPort::write(const uint8_t* data, size_t len) {
   if (_fd < 0) return {IoStatus::Closed, 0};
   for (;;) {

@@ -27,6 +27,9 @@ class ByteStream {
   virtual IoResult read(uint8_t* buf, size_t cap, int timeoutMs) = 0;
   // Writes what fits now (a short count is possible), never waits.
   virtual IoResult write(const uint8_t* data, size_t len) = 0;
+  // Waits at most timeoutMs until a write could make progress; false on timeout or
+  // when the stream is not open. For bounded draining at exit, never in the frame loop.
+  virtual bool waitWritable(int timeoutMs) = 0;
   virtual bool isOpen() const = 0;
   // Tries to open the same device again after Closed; false while it is absent.
   virtual bool reopen() = 0;

@@ -18,6 +18,7 @@ class FakeSerialCable {
    public:
     IoResult read(uint8_t* buf, size_t cap, int timeoutMs) override;  // never waits
     IoResult write(const uint8_t* data, size_t len) override;
+    bool waitWritable(int timeoutMs) override;  // never waits: true when there is room
     bool isOpen() const override { return _open; }
     bool reopen() override;
     void close() override { _open = false; }

@@ -21,6 +21,7 @@ class SerialPort final : public ByteStream {
 
   IoResult read(uint8_t* buf, size_t cap, int timeoutMs) override;
   IoResult write(const uint8_t* data, size_t len) override;
+  bool waitWritable(int timeoutMs) override;
   bool isOpen() const override { return _fd >= 0; }
   bool reopen() override;
   void close() override;
