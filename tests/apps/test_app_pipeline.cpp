@@ -32,19 +32,21 @@ class TinySource final : public FrameSource {
     out.timeUs = static_cast<uint64_t>(_index) * 33333u;
     out.index = _index;
     out.hasGroundTruth = _withTruth;
-    out.groundTruth = Box{10.f, 12.f, 20.f, 16.f};
+    out.groundTruth = _index >= _visibleFrom ? Box{10.f, 12.f, 20.f, 16.f} : Box{};
     ++_index;
     return ReadStatus::Ok;
   }
   const char* error() const override { return "tiny.seq: frame 3: truncated"; }
   const char* name() const override { return "tiny"; }
   void failAt(int i) { _failAt = i; }
+  void visibleFrom(int i) { _visibleFrom = i; }  // ground truth empty before frame i
 
  private:
   int _frames;
   bool _withTruth;
   int _index = 0;
   int _failAt = -1;
+  int _visibleFrom = 0;
 };
 
 // Moves the box 1 px right per update; refuses boxes with x < 0.
@@ -426,4 +428,14 @@ TEST_CASE("drain waits for room and puts queued messages on the line, bounded") 
   rig.cable.setCapacityAtoB(FakeSerialCable::kRingBytes);
   REQUIRE(rig.link.drain(50));
   CHECK(countType(rig.host.drain(), CTP_MSG_TRACK) == 10);
+}
+
+TEST_CASE("ground truth starts tracking at the first frame where the target is visible") {
+  static Rig rig(6, true);
+  rig.source.visibleFrom(3);
+  for (int i = 0; i < 6; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.sink.at(2).state == CTP_STATE_IDLE);
+  CHECK(rig.sink.at(3).state == CTP_STATE_TRACKING);
+  CHECK(rig.sink.at(3).box_px[0] == 10);
+  CHECK(rig.tracker.inits == 1);
 }

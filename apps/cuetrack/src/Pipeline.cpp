@@ -105,7 +105,8 @@ StepResult Pipeline::step() {
       if (_link) _link->sendError(CTP_CMD_START, _startId, CTP_E_REJECTED);
     }
   } else if (!_targetActive && !_autoTargetTried) {
-    _autoTargetTried = true;
+    // --box applies to the first frame; ground truth to the first frame where the
+    // target is visible. Either is tried once.
     Box box{};
     const char* origin = nullptr;
     if (_options.hasBox) {
@@ -116,6 +117,7 @@ StepResult Pipeline::step() {
       origin = "ground truth";
     }
     if (origin) {
+      _autoTargetTried = true;
       const char* why = "";
       if (_tracker.init(frame, box, &why) != 0) {
         char line[200];
