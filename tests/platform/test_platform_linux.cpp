@@ -1,0 +1,77 @@
+// Linux implementations other than the serial port: file/stdout sinks and their
+// errors, the monotonic clock, the stop signals, the reporters.
+#include <catch2/catch.hpp>
+
+#include <signal.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
+
+#include "cuetrack/platform/linux/FdTrackSink.hpp"
+#include "cuetrack/platform/linux/MonotonicClock.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
+
+using namespace cuetrack::platform;
+
+TEST_CASE("a full disk is one line naming the file, not a crash") {
+  FdTrackSink lines;
+  REQUIRE(lines.openFile("/dev/full", TextFormat::Line));  // opening works...
+  ctp_track_t t{};
+  REQUIRE_FALSE(lines.write(t));  // ...writing does not
+  CHECK(std::string(lines.error()) == "/dev/full: write failed: No space left on device");
+  FdTrackSink csv;
+  REQUIRE_FALSE(csv.openFile("/dev/full", TextFormat::Csv));  // the header already fails
+  FdTrackSink missing;
+  REQUIRE_FALSE(missing.openFile("/nonexistent-dir/x.csv", TextFormat::Csv));
+  CHECK(std::string(missing.error()).find("/nonexistent-dir/x.csv: cannot create") == 0);
+}
+
+TEST_CASE("a CSV file gets the header and one row per message") {
+  char path[] = "/tmp/cuetrack-sink-XXXXXX";
+  const int fd = mkstemp(path);
+  REQUIRE(fd >= 0);
+  close(fd);
+  {
+    FdTrackSink sink;
+    REQUIRE(sink.openFile(path, TextFormat::Csv));
+    ctp_track_t t{};
+    t.seq = 1;
+    t.state = CTP_STATE_LOST;
+    REQUIRE(sink.write(t));
+    t.seq = 2;
+    REQUIRE(sink.write(t));
+  }
+  char buf[1024] = "";
+  FILE* f = std::fopen(path, "r");
+  REQUIRE(f);
+  const size_t n = std::fread(buf, 1, sizeof buf - 1, f);
+  std::fclose(f);
+  unlink(path);
+  buf[n] = '\0';
+  const std::string text(buf);
+  CHECK(text.find("seq,time_us,state,") == 0);
+  CHECK(text.find("\n1,0,lost,") != std::string::npos);
+  CHECK(text.find("\n2,0,lost,") != std::string::npos);
+}
+
+TEST_CASE("the monotonic clock never goes back") {
+  MonotonicClock clock;
+  uint64_t last = clock.nowUs();
+  REQUIRE(last > 0);
+  for (int i = 0; i < 1000; ++i) {
+    const uint64_t now = clock.nowUs();
+    REQUIRE(now >= last);
+    last = now;
+  }
+}
+
+TEST_CASE("SIGTERM and SIGINT only set the stop flag") {
+  installStopSignals();
+  CHECK_FALSE(stopRequested());
+  REQUIRE(raise(SIGTERM) == 0);  // the process survives: the handler only records it
+  CHECK(stopRequested());
+  CHECK(stopSignal() == SIGTERM);
+  REQUIRE(raise(SIGPIPE) == 0);  // ignored: a closed pipe becomes a write error instead
+}
