@@ -4,11 +4,13 @@
 
 #include <cstdlib>
 #include <new>
+#include <thread>
 
 #include "AllocCounter.hpp"
 
 using cuetrack::test::AllocScope;
 using cuetrack::test::deallocationCount;
+using cuetrack::test::ThreadAllocScope;
 
 namespace {
 // Stores escape through a volatile pointer so the compiler cannot elide the
@@ -70,4 +72,23 @@ TEST_CASE("code that does not allocate counts zero", "[lint][alloc]") {
   gSink = local;
   CHECK(scope.allocations() == 0);
   gSink = nullptr;
+}
+
+TEST_CASE("the per-thread count sees only the calling thread's allocations", "[lint][alloc]") {
+  AllocScope all;
+  ThreadAllocScope mine;
+  uint64_t workerOwn = 0;
+  std::thread worker([&workerOwn] {
+    ThreadAllocScope own;
+    for (int i = 0; i < 3; ++i) {
+      int* p = new int(i);
+      gSink = p;
+      delete p;
+    }
+    workerOwn = own.allocations();
+  });
+  worker.join();
+  CHECK(workerOwn == 3);
+  // std::thread itself may allocate in this thread; the worker's three are not ours.
+  CHECK(all.allocations() >= mine.allocations() + 3);
 }
