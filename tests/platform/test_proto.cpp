@@ -348,3 +348,26 @@ TEST_CASE("a START command encodes to the exact bytes of the spec example") {
   REQUIRE(n == sizeof expected);
   REQUIRE(std::memcmp(wire, expected, n) == 0);
 }
+
+TEST_CASE("the largest frame decodes, one byte more is overlong") {
+  for (uint8_t fill : {uint8_t{0x00}, uint8_t{0xFF}, uint8_t{0x01}}) {
+    uint8_t payload[CTP_MAX_PAYLOAD];
+    std::memset(payload, fill, sizeof payload);
+    uint8_t wire[CTP_MAX_WIRE];
+    const size_t n = ctp_encode_frame(0x20, payload, sizeof payload, wire, sizeof wire);
+    REQUIRE(n == CTP_MAX_WIRE);
+    ctp_decoder_t d;
+    ctp_decoder_init(&d);
+    Decoded r = feed(d, wire, n);
+    REQUIRE(r.frames.size() == 1);
+    REQUIRE(r.frames[0].len == CTP_MAX_PAYLOAD);
+    REQUIRE(std::memcmp(r.frames[0].payload, payload, sizeof payload) == 0);
+  }
+  std::vector<uint8_t> tooLong(CTP_MAX_ENCODED + 1, 0x01);
+  tooLong.push_back(0);
+  ctp_decoder_t d;
+  ctp_decoder_init(&d);
+  Decoded r = feed(d, tooLong.data(), tooLong.size());
+  REQUIRE(r.frames.empty());
+  REQUIRE(d.stats.overlong == 1);
+}
