@@ -4,12 +4,12 @@
 //   SceneSpec spec;
 //   if (!makeScene("twin-crossing", &spec)) ...;   // names: sceneName(i), i < sceneCount()
 //   spec.frameCount = 60;                          // optional tweaks
-//   static SyntheticSource src(spec, seed);        // ~2.6 MiB: static or allocate once
+//   static SyntheticSource src(spec, seed);        // ~1.6 MiB: static or allocate once
 //   while (src.next(slot) == ReadStatus::Ok) { slot.groundTruth; src.truth().centreMm; }
 //
-// Deterministic by seed (same spec + seed -> same bytes on every platform that has
-// IEEE floats), no OpenCV, no allocation after construction: it is also the on-board
-// app's embedded default source.
+// Deterministic by seed: same spec + seed -> same bytes from the same build (other
+// platforms may differ where libm's sin/atan2 round differently). No OpenCV, no
+// allocation after construction: it is also the on-board app's embedded default source.
 //
 // Depth model (Kinect v1): true depth -> raw disparity (1/8 px steps, KinectDepth.hpp)
 // + Gaussian disparity noise -> rounded -> mm; no reading outside [minDepthMm,
