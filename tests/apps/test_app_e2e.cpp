@@ -16,10 +16,7 @@
 
 #include "Process.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
-#if __has_include("cuetrack/drivers/FakenectWriter.hpp")
 #include "cuetrack/drivers/FakenectWriter.hpp"
-#define CUETRACK_WRITER_HAS_OWN_ERRORS 1  // drivers/recorded's newer writer API
-#endif
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
 #include "cuetrack_proto.h"
@@ -382,17 +379,10 @@ TEST_CASE("cuetrack runs on a fakenect recording and takes the target from its g
     static SyntheticSource synth(spec, 5);
     static FrameSlot slot;
     FakenectWriter writer;
-#if defined(CUETRACK_WRITER_HAS_OWN_ERRORS)
     INFO(writer.error());
     REQUIRE(writer.open(rec.c_str(), "moving"));
     while (synth.next(slot) == ReadStatus::Ok) REQUIRE(writer.write(slot));
     REQUIRE(writer.close());
-#else
-    char err[512] = "";
-    REQUIRE(writer.open(rec.c_str(), "moving", err, sizeof err));
-    while (synth.next(slot) == ReadStatus::Ok) REQUIRE(writer.write(slot, err, sizeof err));
-    REQUIRE(writer.close(err, sizeof err));
-#endif
   }
   const std::string csv = tmp.file("out.csv"), appErr = tmp.file("app.err");
   ChildProcess app;
