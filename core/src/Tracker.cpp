@@ -147,6 +147,29 @@ void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
     const bool near = (k & 1) == 0;
     const float maxOverlap = near ? _config.nearNegativeOverlap : kNegativeMaxOverlap;
     Box b = around;
+    if (near && (k & 2) == 0 && _config.shrunkNegativeScale > 0.f) {
+      // A concentric window shrunk or grown along one axis or both: teaches that the
+      // target's border belongs at the window's border (a window inside the target
+      // otherwise scores as well as the right one, and the estimate shrinks).
+      // Shrunk or grown (1/scale) alike, so neither direction is favoured.
+      const float sc =
+          _rng.below(2) == 0 ? _config.shrunkNegativeScale : 1.f / _config.shrunkNegativeScale;
+      const uint32_t mode = _rng.below(3);
+      const float sw = mode == 1 ? 1.f : sc, sh = mode == 0 ? 1.f : sc;
+      b = Box{around.x + 0.5f * around.w * (1.f - sw), around.y + 0.5f * around.h * (1.f - sh),
+              around.w * sw, around.h * sh};
+      addExample(b, false);
+      continue;
+    }
+    if (near && (k & 2) != 0 && _config.shiftedNegativeFraction > 0.f) {
+      // The estimate shifted along one axis, either way: pins the position likewise.
+      const float d = (_rng.below(2) == 0 ? -1.f : 1.f) * _config.shiftedNegativeFraction;
+      const bool alongX = _rng.below(2) == 0;
+      b = Box{around.x + (alongX ? d * around.w : 0.f), around.y + (alongX ? 0.f : d * around.h),
+              around.w, around.h};
+      addExample(b, false);
+      continue;
+    }
     for (int attempt = 0; attempt < 12; ++attempt) {
       const float range = near ? 0.6f : kNegativeRange;
       const float cx = around.x + 0.5f * around.w + _rng.uniform(-range, range) * around.w;

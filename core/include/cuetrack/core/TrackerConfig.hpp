@@ -37,18 +37,22 @@ struct TrackerConfig {
   bool fallbackTo2d = false;       // 3D/depth requested but the frame has none: run 2D RGB
 
   // Implementation parameters (docs/algorithm.md), the same in every preset
-  Estimator estimator = Estimator::MaxWeight;
+  Estimator estimator = Estimator::WeightedMean;
   float weightGain = 25.f;           // lambda: particle weight = exp(lambda * c), c in [-1, 1]
   float learnConfidence = 0.55f;     // update gate: confidence (c + 1) / 2 at the estimate >= this
   float learnConcentration = 0.5f;   // ... and weighted mean overlap of particles with it >= this
-  int negativesPerUpdate = 5;        // new negatives per learning step
-  int initialPositives = 5;          // the init box plus slightly shifted copies, kept for good
-  float anchorWeight = 1.f;          // boosting weight of a kept initial positive vs a recent one
+  int negativesPerUpdate = 10;       // new negatives per learning step
+  int initialPositives = 9;          // the init box plus slightly shifted copies, kept for good
+  float anchorWeight = 2.f;          // boosting weight of a kept initial positive vs a recent one
   int boostCandidates = 64;          // GentleBoost rounds after the first search these best
   float nearNegativeOverlap = 0.5f;  // near-miss negatives overlap the estimate less than this
-  float positionNoise2d = 0.06f;     // 2D motion noise per frame, x sqrt(w h)
-  float scaleNoise2d = 0.025f;       // 2D std of ln(scale) per frame
-  float aspectNoise2d = 0.01f;       // 2D std of ln(w/h) per frame
+  float shrunkNegativeScale =
+      0.65f;  // > 0: some near negatives: the estimate scaled by this or 1/this
+  float shiftedNegativeFraction =
+      0.2f;                       // > 0: some near negatives are the estimate shifted by this
+  float positionNoise2d = 0.06f;  // 2D motion noise per frame, x sqrt(w h)
+  float scaleNoise2d = 0.025f;    // 2D std of ln(scale) per frame
+  float aspectNoise2d = 0.01f;    // 2D std of ln(w/h) per frame
 };
 
 enum class Preset : uint8_t {
