@@ -563,13 +563,13 @@ void SyntheticSource::applyDepthModel(FrameSlot& out, uint32_t frameSeed) {
   if (_spec.lightStepFrame >= 0 && out.index >= _spec.lightStepFrame) gain *= _spec.lightStepGain;
   if (gain < 0.f) gain = 0.f;
   const int gain256 = static_cast<int>(gain * 256.f + 0.5f);
-  const int noiseAmp = static_cast<int>(_spec.colourNoise + 0.5f);
   const float fb = _k.fx * _spec.baselineMm;
   const float sigma = _spec.disparityNoiseRaw;
   const float minZ = _spec.minDepthMm, maxZ = _spec.maxDepthMm;
   const bool shadows = _spec.shadows;
   constexpr float kB = static_cast<float>(kinect::kRawToInvMetresB);
   constexpr float kInvA = static_cast<float>(1.0 / kinect::kRawToInvMetresA);
+  constexpr float kNoDepthF = static_cast<float>(kinect::kRawNoDepth);
 
   for (int v = 0; v < h; ++v) {
     // Noise comes from fixed tables at a random offset per row: one draw per row keeps
@@ -581,35 +581,49 @@ void SyntheticSource::applyDepthModel(FrameSlot& out, uint32_t frameSeed) {
     const float* gn = _gaussian + ((rowDraw >> 32) & 2047u);
     Rgb8* rgb = out.rgb.data() + v * w;
     uint8_t* bytes = reinterpret_cast<uint8_t*>(rgb);
-    if (gain256 != 256 || noiseAmp > 0) {
+    if (gain256 == 256) {
+      // Noise only (most scenes): 16-bit lanes, no multiply.
       for (int i = 0; i < 3 * w; ++i) {
-        const int val = ((bytes[i] * gain256 + 128) >> 8) + cn[i];
+        const int16_t val = static_cast<int16_t>(bytes[i] + cn[i]);
+        bytes[i] = static_cast<uint8_t>(val < 0 ? 0 : (val > 255 ? 255 : val));
+      }
+    } else {
+      // Gain in 1/128 steps, at most 2x, so the product fits 16-bit lanes (255 * 256).
+      const uint16_t g128 = static_cast<uint16_t>(gain256 >= 512 ? 256 : (gain256 + 1) / 2);
+      for (int i = 0; i < 3 * w; ++i) {
+        const uint16_t scaled = static_cast<uint16_t>((bytes[i] * g128 + 64u) >> 7);
+        const int16_t val = static_cast<int16_t>(scaled + cn[i]);
         bytes[i] = static_cast<uint8_t>(val < 0 ? 0 : (val > 255 ? 255 : val));
       }
     }
     uint16_t* dmm = out.depthMm.data() + v * w;
     const float* z = _zMm + v * w;
-    // Pass 1 (vectorisable): true depth -> noisy raw disparity (1/8 px steps) -> mm.
-    float* invZ = _rowInvZ;
-    uint16_t* rowMm = _rowMm;
-    for (int u = 0; u < w; ++u) {
-      const float zz = z[u];
-      const float inv = 1.f / zz;
-      invZ[u] = inv;
-      const float raw = (1000.f * inv - kB) * kInvA + sigma * gn[u];
-      int q = static_cast<int>(raw + 0.5f);
-      q = q < 0 ? 0 : (q > kinect::kRawNoDepth ? kinect::kRawNoDepth : q);
-      const bool inRange = zz >= minZ && zz <= maxZ;
-      rowMm[u] = inRange ? static_cast<uint16_t>(q) : kinect::kRawNoDepth;
+    // Pass 1 (vectorised: restrict pointers, float clamps, int32 out): true depth ->
+    // noisy raw disparity (1/8 px steps); out of range -> "no reading".
+    {
+      const float* __restrict zr = z;
+      const float* __restrict g = gn;
+      float* __restrict inv = _rowInvZ;
+      int32_t* __restrict rawOut = _rowRaw;
+      for (int u = 0; u < w; ++u) {
+        const float zz = zr[u];
+        const float iv = 1.f / zz;
+        inv[u] = iv;
+        float raw = (1000.f * iv - kB) * kInvA + sigma * g[u] + 0.5f;
+        raw = raw < 0.f ? 0.f : raw;
+        raw = raw > kNoDepthF ? kNoDepthF : raw;
+        const int32_t q = static_cast<int32_t>(raw);
+        rawOut[u] = (zz >= minZ && zz <= maxZ) ? q : kinect::kRawNoDepth;
+      }
     }
     // Pass 2, right to left: a pixel is in the projector's shadow when a nearer pixel to
     // its right lands at or left of it in the projector's image.
     float runMin = 1e30f;
     for (int u = w - 1; u >= 0; --u) {
-      const float up = static_cast<float>(u) - fb * invZ[u];  // column in the projector's image
+      const float up = static_cast<float>(u) - fb * _rowInvZ[u];  // column in the projector image
       const bool shadowed = shadows && up > runMin;
       runMin = up < runMin ? up : runMin;
-      dmm[u] = shadowed ? 0 : _rawToMm.mm[rowMm[u]];
+      dmm[u] = shadowed ? 0 : _rawToMm.mm[_rowRaw[u]];
     }
   }
 }

@@ -180,7 +180,7 @@ class SyntheticSource final : public FrameSource {
   float _zMm[kMaxPixels];
   uint8_t _owner[kMaxPixels];
   float _rowInvZ[kMaxImageWidth];   // depth model scratch, one row [1/mm]
-  uint16_t _rowMm[kMaxImageWidth];  // raw disparity of one row before the shadow test
+  int32_t _rowRaw[kMaxImageWidth];  // raw disparity of one row before the shadow test
 };
 
 }  // namespace cuetrack
