@@ -267,3 +267,22 @@ TEST_CASE("fakenect reading allocates nothing per frame after the first", "[fake
   CHECK(n == 5);
   CHECK(scope.allocations() == 0);
 }
+
+TEST_CASE("fakenect writing allocates nothing per frame after the first", "[fakenect][alloc]") {
+  TempDir tmp;
+  SceneSpec spec;
+  REQUIRE(makeScene("moving", &spec));
+  spec.frameCount = 4;
+  auto src = std::make_unique<SyntheticSource>(spec, 3);
+  auto slot = std::make_unique<FrameSlot>();
+  FakenectWriter w;
+  if (!w.open((tmp / "rec").c_str(), "moving")) FAIL(w.error());
+  REQUIRE(src->next(*slot) == ReadStatus::Ok);
+  if (!w.write(*slot)) FAIL(w.error());
+  test::AllocScope scope;
+  while (src->next(*slot) == ReadStatus::Ok)
+    if (!w.write(*slot)) FAIL(w.error());
+  CHECK(scope.allocations() == 0);
+  if (!w.close()) FAIL(w.error());
+  CHECK(w.framesWritten() == 4);
+}
