@@ -427,3 +427,39 @@ TEST_CASE("cuetrack-listen ends cleanly when the port closes") {
   CHECK(status == 0);
   CHECK(slurp(listenErr).find("port closed") != std::string::npos);
 }
+
+TEST_CASE("documented exit codes, each with one line naming what is at fault") {
+  TempDir tmp;
+  const std::string err = tmp.file("err");
+  struct Case {
+    std::vector<const char*> args;
+    int code;
+    const char* says;
+  };
+  const std::vector<Case> cases = {
+      {{CUETRACK_APP_BIN, "--help"}, 0, ""},
+      {{CUETRACK_APP_BIN, "--frames", "2", "--quiet"}, 0, ""},
+      {{CUETRACK_APP_BIN, "--bogus"}, 1, "unknown option '--bogus'"},
+      {{CUETRACK_APP_BIN, "--config", "9.9"}, 1, "--config 9.9: unknown preset"},
+      {{CUETRACK_APP_BIN, "--serial", "/dev/null", "--baud", "300"}, 1, "--baud 300"},
+      {{CUETRACK_APP_BIN, "--source", "synth:nosuchscene"}, 2, "synth:nosuchscene"},
+      {{CUETRACK_APP_BIN, "--serial", "/nonexistent/tty"}, 3, "/nonexistent/tty: cannot open"},
+      {{CUETRACK_APP_BIN, "--out", "/dev/full", "--frames", "2"}, 3, "/dev/full"},
+      {{CUETRACK_APP_BIN, "--box", "5000,5000,10,10", "--frames", "2"}, 4, "--box 5000,5000,10,10"},
+      {{CUETRACK_LISTEN_BIN}, 1, "missing PORT"},
+      {{CUETRACK_LISTEN_BIN, "/dev/null", "--send", "jump"}, 1, "command 'jump'"},
+      {{CUETRACK_LISTEN_BIN, "/nonexistent/tty"}, 2, "/nonexistent/tty: cannot open"},
+  };
+  for (const Case& c : cases) {
+    std::vector<const char*> argv = c.args;
+    argv.push_back(nullptr);
+    ChildProcess p;
+    REQUIRE(p.start(argv.data(), "/dev/null", err.c_str()));
+    int status = -1;
+    REQUIRE(p.wait(kAppTimeoutMs, &status));
+    const std::string text = slurp(err);
+    INFO(c.args[1 < c.args.size() ? 1 : 0] << " -> " << text);
+    CHECK(status == c.code);
+    CHECK(text.find(c.says) != std::string::npos);
+  }
+}
