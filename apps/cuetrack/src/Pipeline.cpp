@@ -65,6 +65,53 @@ void Pipeline::serviceLink() {
   if (_link->heartbeatDue()) _link->sendHeartbeat(_state, _frames);
 }
 
+bool Pipeline::startFromCommand(const Frame& frame, Box* initBox) {
+  _startPending = false;
+  _autoTargetTried = true;
+  const char* why = "";
+  if (_tracker.init(frame, _startBox, &why) == 0) {
+    *initBox = _startBox;
+    if (_link) _link->sendAck(CTP_CMD_START, _startId);
+    return true;
+  }
+  char line[160];
+  std::snprintf(line, sizeof line, "serial START %g,%g,%g,%g refused: %s", _startBox.x, _startBox.y,
+                _startBox.w, _startBox.h, why);
+  _reporter.report(line);
+  _tracker.reset();
+  _targetActive = false;
+  _state = CTP_STATE_IDLE;
+  if (_link) _link->sendError(CTP_CMD_START, _startId, CTP_E_REJECTED);
+  return false;
+}
+
+bool Pipeline::startFromOptions(const Frame& frame, Box* initBox, bool* rejected) {
+  // --box applies to the first frame; ground truth to the first frame where the
+  // target is visible. Either is tried once.
+  Box box{};
+  const char* origin = nullptr;
+  if (_options.hasBox) {
+    box = _options.box;
+    origin = "--box";
+  } else if (_options.useGroundTruth && _slot.hasGroundTruth && !_slot.groundTruth.empty()) {
+    box = _slot.groundTruth;
+    origin = "ground truth";
+  }
+  if (!origin) return false;
+  _autoTargetTried = true;
+  const char* why = "";
+  if (_tracker.init(frame, box, &why) == 0) {
+    *initBox = box;
+    return true;
+  }
+  char line[200];
+  std::snprintf(line, sizeof line, "%s %g,%g,%g,%g refused by the tracker: %s", origin, box.x,
+                box.y, box.w, box.h, why);
+  _reporter.report(line);
+  *rejected = _options.hasBox;  // a refused --box ends the run; refused ground truth does not
+  return false;
+}
+
 StepResult Pipeline::step() {
   serviceLink();
   if (_stopRequested) {
@@ -84,52 +131,14 @@ StepResult Pipeline::step() {
   const uint64_t t0 = _clock.nowUs();
 
   TrackResult result;
-  bool initialised = false;
   Box initBox{};
+  bool initialised = false;
   if (_startPending) {
-    _startPending = false;
-    _autoTargetTried = true;
-    const char* why = "";
-    if (_tracker.init(frame, _startBox, &why) == 0) {
-      initialised = true;
-      initBox = _startBox;
-      if (_link) _link->sendAck(CTP_CMD_START, _startId);
-    } else {
-      char line[160];
-      std::snprintf(line, sizeof line, "serial START %g,%g,%g,%g refused: %s", _startBox.x,
-                    _startBox.y, _startBox.w, _startBox.h, why);
-      _reporter.report(line);
-      _tracker.reset();
-      _targetActive = false;
-      _state = CTP_STATE_IDLE;
-      if (_link) _link->sendError(CTP_CMD_START, _startId, CTP_E_REJECTED);
-    }
+    initialised = startFromCommand(frame, &initBox);
   } else if (!_targetActive && !_autoTargetTried) {
-    // --box applies to the first frame; ground truth to the first frame where the
-    // target is visible. Either is tried once.
-    Box box{};
-    const char* origin = nullptr;
-    if (_options.hasBox) {
-      box = _options.box;
-      origin = "--box";
-    } else if (_options.useGroundTruth && _slot.hasGroundTruth && !_slot.groundTruth.empty()) {
-      box = _slot.groundTruth;
-      origin = "ground truth";
-    }
-    if (origin) {
-      _autoTargetTried = true;
-      const char* why = "";
-      if (_tracker.init(frame, box, &why) != 0) {
-        char line[200];
-        std::snprintf(line, sizeof line, "%s %g,%g,%g,%g refused by the tracker: %s", origin, box.x,
-                      box.y, box.w, box.h, why);
-        _reporter.report(line);
-        if (_options.hasBox) return StepResult::BoxRejected;
-      } else {
-        initialised = true;
-        initBox = box;
-      }
-    }
+    bool rejected = false;
+    initialised = startFromOptions(frame, &initBox, &rejected);
+    if (rejected) return StepResult::BoxRejected;
   }
 
   if (initialised) {

@@ -60,6 +60,10 @@ class Pipeline final : public AppControl {
   const CommandHandler& commands() const { return _commands; }
 
  private:
+  // Initialise the tracker from a serial START / from --box or ground truth; true when
+  // tracking starts on this frame (*initBox: the box given).
+  bool startFromCommand(const Frame& frame, Box* initBox);
+  bool startFromOptions(const Frame& frame, Box* initBox, bool* rejected);
   void emit(const ctp_track_t& msg);
   void statusLine();
 
