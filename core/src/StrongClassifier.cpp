@@ -24,6 +24,7 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
     else
       w[i] = 0.5f / static_cast<float>(numNeg);
   }
+  const int split = set.positiveSlots();  // label layout: positives first
   if (candidates < 1) candidates = 1;
   if (candidates > kMaxPoolFeatures) candidates = kMaxPoolFeatures;
   int cand[kMaxPoolFeatures];  // later rounds' candidates, ascending round-0 error
@@ -35,7 +36,7 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
     float bestErr = 0.f;
     if (round == 0) {
       for (int f = 0; f < pool.size(); ++f) {
-        const float e = WeakClassifier::binnedError(cache.row(f), w, y, n);
+        const float e = WeakClassifier::binnedErrorSplit(cache.row(f), w, split, n);
         if (featureErrors != nullptr) featureErrors[f] = e;
         if (best < 0 || e < bestErr) {
           best = f;
@@ -56,7 +57,7 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
     } else {
       for (int k = 0; k < numCand; ++k) {
         const int f = cand[k];
-        const float e = WeakClassifier::binnedError(cache.row(f), w, y, n);
+        const float e = WeakClassifier::binnedErrorSplit(cache.row(f), w, split, n);
         if (best < 0 || e < bestErr) {
           best = f;
           bestErr = e;

@@ -83,6 +83,30 @@ float WeakClassifier::binnedError(const Code* codes, const float* w, const int8_
   return err;
 }
 
+float WeakClassifier::binnedErrorSplit(const Code* codes, const float* w, int split, int n) {
+  float p[kNumBins] = {}, q[kNumBins] = {};
+  for (int i = 0; i < split; ++i) {
+    const Code& c = codes[i];
+    const float wi = w[i];
+    p[0] += wi * c.wCentre;
+    p[c.binA] += wi * c.wA;
+    p[c.binB] += wi * c.wB;
+  }
+  for (int i = split; i < n; ++i) {
+    const Code& c = codes[i];
+    const float wi = w[i];
+    q[0] += wi * c.wCentre;
+    q[c.binA] += wi * c.wA;
+    q[c.binB] += wi * c.wB;
+  }
+  float err = 0.f;
+  for (int b = 0; b < kNumBins; ++b) {
+    const float s = p[b] + q[b];
+    if (s > kEps) err += 4.f * p[b] * q[b] / s;
+  }
+  return err;
+}
+
 void WeakClassifier::fit(const Code* codes, const float* w, const int8_t* y, int n,
                          FeatureKind kind, const ShareTable* table) {
   _kind = kind;

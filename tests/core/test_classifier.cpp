@@ -118,6 +118,19 @@ TEST_CASE("binned error ranks an informative feature above a useless one", "[cor
     w[i] = 1.f / n;
   }
   const float eg = WeakClassifier::binnedError(good, w, y, n);
+  {
+    // The split form (positives first) gives the same error.
+    Code sorted[n];
+    float ws[n];
+    int k = 0;
+    for (int pass = 0; pass < 2; ++pass)
+      for (int i = 0; i < n; ++i)
+        if ((y[i] > 0) == (pass == 0)) {
+          sorted[k] = good[i];
+          ws[k++] = w[i];
+        }
+    REQUIRE(WeakClassifier::binnedErrorSplit(sorted, ws, n / 2, n) == Approx(eg).epsilon(1e-5));
+  }
   const float eb = WeakClassifier::binnedError(bad, w, y, n);
   REQUIRE(eg < 0.5f * eb);
   REQUIRE(eb <= 1.0001f);

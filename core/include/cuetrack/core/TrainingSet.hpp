@@ -42,6 +42,7 @@ class TrainingSet {
   // which the first `anchors` (>= 1) are kept for good (the initial ones: against drift).
   void reset(int capacity, int anchors = 1);
   bool isAnchor(int slot) const { return slot < _anchors; }
+  int positiveSlots() const { return _posCapacity; }  // slots [0, this) hold positives only
   // Adds an example, replacing the oldest of its FIFO; returns the slot written.
   int add(const FrameTables& t, const Box& win, bool positive);
   int capacity() const { return _capacity; }

@@ -128,6 +128,9 @@ class WeakClassifier {
   // responses: sum over bins of 4 Wp Wn / (Wp + Wn), in [0, sum w]. Cheap (no
   // lognormal), used to choose among all pool features each round.
   static float binnedError(const Code* codes, const float* w, const int8_t* y, int n);
+  // The same when examples [0, split) are all positive and [split, n) all negative
+  // (the training set's layout): no per-example label test.
+  static float binnedErrorSplit(const Code* codes, const float* w, int split, int n);
 
  private:
   float _lut[kLutCells]{};
