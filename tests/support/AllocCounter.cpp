@@ -77,60 +77,69 @@ void free(void* p) {
   __libc_free(p);
 }
 }
-// operator new goes through malloc above, so it is counted once.
-void* operator new(size_t n) {
-  void* p = malloc(n ? n : 1);
-  if (!p) std::abort();
-  return p;
-}
-#else
-// Under ASan only operator new is counted (ASan owns malloc).
-void* operator new(size_t n) {
-  countAlloc();
+#endif
+
+// operator new/delete: with the C allocator interposed above they are counted there,
+// once; under ASan (which owns malloc) they count here, every overload alike.
+namespace {
+constexpr bool kCountHere = !CUETRACK_INTERPOSE_MALLOC;
+void* newBytes(size_t n) {
+  if (kCountHere) countAlloc();
   void* p = std::malloc(n ? n : 1);
   if (!p) std::abort();
   return p;
 }
-#endif
-
-void* operator new[](size_t n) {
-  return ::operator new(n);
-}
-void* operator new(size_t n, std::align_val_t a) {
+void* newAligned(size_t n, std::align_val_t a) {
+  if (kCountHere) countAlloc();
   void* p = nullptr;
   if (posix_memalign(&p, static_cast<size_t>(a), n ? n : 1) != 0) std::abort();
   return p;
 }
-void* operator new[](size_t n, std::align_val_t a) {
-  return ::operator new(n, a);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
+void deleteBytes(void* p) {
+  if (kCountHere && p) gFrees.fetch_add(1, std::memory_order_relaxed);
   std::free(p);
 }
-void operator delete[](void* p, std::align_val_t) noexcept {
-  std::free(p);
+}  // namespace
+
+void* operator new(size_t n) {
+  return newBytes(n);
 }
-void operator delete(void* p, size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, size_t, std::align_val_t) noexcept {
-  std::free(p);
+void* operator new[](size_t n) {
+  return newBytes(n);
 }
 void* operator new(size_t n, const std::nothrow_t&) noexcept {
-  return std::malloc(n ? n : 1);
+  return newBytes(n);
 }
 void* operator new[](size_t n, const std::nothrow_t&) noexcept {
-  return std::malloc(n ? n : 1);
+  return newBytes(n);
+}
+void* operator new(size_t n, std::align_val_t a) {
+  return newAligned(n, a);
+}
+void* operator new[](size_t n, std::align_val_t a) {
+  return newAligned(n, a);
 }
 void operator delete(void* p) noexcept {
-  std::free(p);
+  deleteBytes(p);
 }
 void operator delete[](void* p) noexcept {
-  std::free(p);
+  deleteBytes(p);
 }
 void operator delete(void* p, size_t) noexcept {
-  std::free(p);
+  deleteBytes(p);
 }
 void operator delete[](void* p, size_t) noexcept {
-  std::free(p);
+  deleteBytes(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+  deleteBytes(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+  deleteBytes(p);
+}
+void operator delete(void* p, size_t, std::align_val_t) noexcept {
+  deleteBytes(p);
+}
+void operator delete[](void* p, size_t, std::align_val_t) noexcept {
+  deleteBytes(p);
 }
