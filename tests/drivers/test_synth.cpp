@@ -162,7 +162,9 @@ TEST_CASE("occlusion scene hides the target completely for a while, then shows i
   auto slot = std::make_unique<FrameSlot>();
   int hidden = 0, partial = 0, visibleAfter = 0;
   bool wasHidden = false;
-  while (src->next(*slot) == ReadStatus::Ok) {
+  // Every third frame keeps the test quick under qemu; the target is hidden for ~24 frames.
+  for (int f = 0; f < 150; f += 3) {
+    REQUIRE(src->render(f, *slot));
     const SynthTruth& t = src->truth();
     CHECK(t.projectedPixels > 0);
     if (t.visiblePixels == 0) {
