@@ -31,9 +31,11 @@ class StrongClassifier {
   }
   // c(x) for n windows at once, weak classifier by weak classifier (each one's table and
   // feature stay in cache across the windows); windows with valid[i] == 0 get -1.
+  // `order` (optional) is the visiting order of the windows: nearby windows in turn keep
+  // the table rows they read in cache.
   template <typename U, typename S>
   void evaluateMany(const ChannelTables<U, S>& t, const Box* wins, const uint8_t* valid, int n,
-                    float* out) const {
+                    float* out, const uint16_t* order = nullptr) const {
     for (int i = 0; i < n; ++i) out[i] = 0.f;
     const ChannelTables<U, S> tl = t;  // a local copy: the compiler keeps it in registers
     for (int m = 0; m < _m; ++m) {
@@ -41,13 +43,13 @@ class StrongClassifier {
       const WeakClassifier& w = _weak[m];
       switch (f.kind) {
         case FeatureKind::Gray:
-          accumulate<FeatureKind::Gray>(f, w, tl, wins, valid, n, out);
+          accumulate<FeatureKind::Gray>(f, w, tl, wins, valid, n, out, order);
           break;
         case FeatureKind::Depth:
-          accumulate<FeatureKind::Depth>(f, w, tl, wins, valid, n, out);
+          accumulate<FeatureKind::Depth>(f, w, tl, wins, valid, n, out, order);
           break;
         case FeatureKind::Colour:
-          accumulate<FeatureKind::Colour>(f, w, tl, wins, valid, n, out);
+          accumulate<FeatureKind::Colour>(f, w, tl, wins, valid, n, out, order);
           break;
       }
     }
@@ -63,9 +65,12 @@ class StrongClassifier {
  private:
   template <FeatureKind K, typename U, typename S>
   static void accumulate(const Feature& f, const WeakClassifier& w, const ChannelTables<U, S>& t,
-                         const Box* wins, const uint8_t* valid, int n, float* out) {
-    for (int i = 0; i < n; ++i)
+                         const Box* wins, const uint8_t* valid, int n, float* out,
+                         const uint16_t* order) {
+    for (int k = 0; k < n; ++k) {
+      const int i = order != nullptr ? order[k] : k;
       if (valid[i]) out[i] += w.predict(evaluateKind<K>(f, wins[i], t));
+    }
   }
 
   Feature _feature[kMaxWeakClassifiers];

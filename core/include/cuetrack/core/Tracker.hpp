@@ -95,6 +95,8 @@ class Tracker {
   Box _boxes[kMaxParticles];
   float _scores[kMaxParticles];
   uint8_t _valid[kMaxParticles];
+  uint8_t _band[kMaxParticles];    // scoring order: row band of each window
+  uint16_t _order[kMaxParticles];  // scoring order: particle indices by band
   float _featureErrors[kMaxPoolFeatures];
   uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
 };
