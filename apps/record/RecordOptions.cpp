@@ -89,6 +89,15 @@ ParseResult parse(int argc, char** argv, Options* out, char* err, std::size_t er
       if (!needValue()) return ParseResult::Error;
       o.outDir = v;
       ++i;
+    } else if (std::strcmp(a, "--format") == 0) {
+      if (!needValue()) return ParseResult::Error;
+      if (std::strcmp(v, "fakenect") == 0)
+        o.format = Format::Fakenect;
+      else if (std::strcmp(v, "rgbd") == 0)
+        o.format = Format::Rgbd;
+      else
+        return bad("--format takes fakenect or rgbd", v);
+      ++i;
     } else if (std::strcmp(a, "--frames") == 0) {
       if (!needValue()) return ParseResult::Error;
       if (!parseInt(v, 1, 100000000, &n)) return bad("--frames needs a count >= 1", v);

@@ -14,8 +14,11 @@ inline constexpr int kExitUsage = 1;   // bad command line
 inline constexpr int kExitDevice = 2;  // no Kinect, cannot open it, or the stream failed mid-run
 inline constexpr int kExitOutput = 3;  // cannot write the recording
 
+enum class Format { Fakenect, Rgbd };
+
 struct Options {
   const char* outDir = nullptr;
+  Format format = Format::Fakenect;
   int maxFrames = 0;        // 0 = no limit
   double maxSeconds = 0.0;  // [s] of camera time; 0 = no limit
   bool list = false;

@@ -1,5 +1,6 @@
-// cuetrack-record: Kinect -> fakenect recording (INDEX.txt, r-*.ppm, d-*.pgm), with a
-// frame-count or duration limit and a progress line. Exit codes are in usage().
+// cuetrack-record: Kinect -> fakenect recording (INDEX.txt, r-*.ppm, d-*.pgm) or RGB-D
+// folder (host builds with OpenCV), with a frame-count or duration limit and a progress
+// line. Exit codes are in usage().
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -8,6 +9,9 @@
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/KinectSource.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
+#if defined(CUETRACK_RECORD_HAVE_RGBD)
+#include "cuetrack/drivers/OpenCvSources.hpp"
+#endif
 
 using namespace cuetrack;
 
@@ -16,7 +20,49 @@ namespace {
 // Large: static storage, never the stack.
 KinectSource gKinect;
 FrameSlot gSlot;
-FakenectWriter gWriter;
+
+// The chosen output format's writer (both share open/write/close/error).
+class Output {
+ public:
+  bool open(record::Format format, const char* dir) {
+    _format = format;
+    if (format == record::Format::Fakenect) return _fakenect.open(dir);
+#if defined(CUETRACK_RECORD_HAVE_RGBD)
+    return _rgbd.open(dir);
+#else
+    _unsupported = true;
+    return false;
+#endif
+  }
+  bool write(const FrameSlot& f) {
+#if defined(CUETRACK_RECORD_HAVE_RGBD)
+    if (_format == record::Format::Rgbd) return _rgbd.write(f);
+#endif
+    return _fakenect.write(f);
+  }
+  bool close() {
+#if defined(CUETRACK_RECORD_HAVE_RGBD)
+    if (_format == record::Format::Rgbd) return _rgbd.close();
+#endif
+    return _fakenect.close();
+  }
+  const char* error() const {
+    if (_unsupported) return "--format rgbd needs a host build with OpenCV (this build has none)";
+#if defined(CUETRACK_RECORD_HAVE_RGBD)
+    if (_format == record::Format::Rgbd) return _rgbd.error();
+#endif
+    return _fakenect.error();
+  }
+
+ private:
+  record::Format _format = record::Format::Fakenect;
+  bool _unsupported = false;
+  FakenectWriter _fakenect;
+#if defined(CUETRACK_RECORD_HAVE_RGBD)
+  RgbdFolderWriter _rgbd;
+#endif
+};
+Output gWriter;
 
 int listDevices() {
   char err[160];
@@ -59,6 +105,12 @@ int main(int argc, char** argv) {
   }
   if (opt.list) return listDevices();
 
+#if !defined(CUETRACK_RECORD_HAVE_RGBD)
+  if (opt.format == record::Format::Rgbd) {
+    std::fprintf(stderr, "cuetrack-record: --format rgbd needs a host build with OpenCV\n");
+    return record::kExitUsage;
+  }
+#endif
   platform::installStopSignals();
   opt.kinect.stopRequested = &platform::stopRequested;
   if (!gKinect.open(opt.kinect)) {
@@ -71,7 +123,7 @@ int main(int argc, char** argv) {
                  gKinect.streams() == KinectStreams::Both
                      ? " (Pi-class boards carry ~15-20 MB/s: see docs/kinect.md if frames drop)"
                      : "");
-  if (!gWriter.open(opt.outDir)) {
+  if (!gWriter.open(opt.format, opt.outDir)) {
     std::fprintf(stderr, "cuetrack-record: %s\n", gWriter.error());
     gKinect.close();
     return record::kExitOutput;

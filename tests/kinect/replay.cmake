@@ -57,6 +57,11 @@ add_executable(test_kinect_replay test_kinect_replay.cpp)
 target_link_libraries(test_kinect_replay PRIVATE cuetrack_test_main cuetrack_kinect cuetrack_recorded
                       cuetrack::core cuetrack_alloc_counter cuetrack_warnings)
 
+if(TARGET cuetrack_recorded_cv)  # RGB-D folder reader for cuetrack-record --format rgbd
+  target_link_libraries(test_kinect_replay PRIVATE cuetrack_recorded_cv)
+  target_compile_definitions(test_kinect_replay PRIVATE CUETRACK_TEST_HAVE_RGBD)
+endif()
+
 function(kinect_replay_test name tag recording)
   add_test(NAME ${name} COMMAND ${_run_fakenect} $<TARGET_FILE:test_kinect_replay> "${tag}")
   set_tests_properties(${name} PROPERTIES
@@ -101,3 +106,16 @@ set_tests_properties(kinect_record_replay PROPERTIES
   FIXTURES_REQUIRED kinect_recordings FIXTURES_SETUP kinect_copy)
 kinect_replay_test(kinect_record_copy_matches "[copy]" ${_rec}/moving "CUETRACK_KINECT_COPY=${_rec}/copy")
 set_tests_properties(kinect_record_copy_matches PROPERTIES FIXTURES_REQUIRED "kinect_recordings;kinect_copy")
+
+if(TARGET cuetrack_recorded_cv)
+  kinect_record_test(kinect_record_replay_rgbd
+                     "${_run_fakenect};${_record};--format;rgbd;--frames;5;--out;${_rec}/copy-rgbd" 0
+                     "-DEXPECT_ERR=5/5 frames" -DCLEAN_DIR=${_rec}/copy-rgbd)
+  set_tests_properties(kinect_record_replay_rgbd PROPERTIES
+    ENVIRONMENT "FAKENECT_PATH=${_rec}/moving;${_fakenect_env}"
+    FIXTURES_REQUIRED kinect_recordings FIXTURES_SETUP kinect_copy_rgbd)
+  kinect_replay_test(kinect_record_rgbd_matches "[copy-rgbd]" ${_rec}/moving
+                     "CUETRACK_KINECT_COPY=${_rec}/copy-rgbd")
+  set_tests_properties(kinect_record_rgbd_matches PROPERTIES
+    FIXTURES_REQUIRED "kinect_recordings;kinect_copy_rgbd")
+endif()

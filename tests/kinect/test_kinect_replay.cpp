@@ -15,6 +15,9 @@
 #include "cuetrack/core/Tracker.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/KinectSource.hpp"
+#if defined(CUETRACK_TEST_HAVE_RGBD)
+#include "cuetrack/drivers/OpenCvSources.hpp"
+#endif
 
 using namespace cuetrack;
 
@@ -266,3 +269,24 @@ TEST_CASE("cuetrack-record's copy of a replayed recording reads back as the orig
   CHECK(frames >= 2);
   CHECK(same);
 }
+
+#if defined(CUETRACK_TEST_HAVE_RGBD)
+TEST_CASE("cuetrack-record --format rgbd writes the replayed frames as an RGB-D folder",
+          "[replay][copy-rgbd]") {
+  const char* copy = std::getenv("CUETRACK_KINECT_COPY");
+  REQUIRE(copy != nullptr);
+  static RgbdFolderReader copyReader;
+  openReference();
+  INFO("copy: " << copy);
+  REQUIRE(copyReader.open(copy));
+  int frames = 0;
+  bool same = true;
+  while (copyReader.next(gLive) == ReadStatus::Ok) {
+    REQUIRE(gReader.next(gRef) == ReadStatus::Ok);
+    same = same && sameColour(gLive, gRef) && sameDepth(gLive, gRef);
+    ++frames;
+  }
+  CHECK(frames == 5);  // --frames 5
+  CHECK(same);
+}
+#endif
