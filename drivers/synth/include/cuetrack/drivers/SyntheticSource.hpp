@@ -7,9 +7,10 @@
 //   static SyntheticSource src(spec, seed);        // ~1.6 MiB: static or allocate once
 //   while (src.next(slot) == ReadStatus::Ok) { slot.groundTruth; src.truth().centreMm; }
 //
-// Deterministic by seed: same spec + seed -> same bytes from the same build (other
-// platforms may differ where libm's sin/atan2 round differently). No OpenCV, no
-// allocation after construction: it is also the on-board app's embedded default source.
+// Deterministic by seed: same spec + seed -> same bytes, on x86-64, aarch64 and armhf
+// alike (built with -ffp-contract=off; golden hashes in tests/drivers/test_synth.cpp).
+// No OpenCV, no allocation after construction: it is also the on-board app's embedded
+// default source.
 //
 // Depth model (Kinect v1): true depth -> raw disparity (1/8 px steps, KinectDepth.hpp)
 // + Gaussian disparity noise -> rounded -> mm; no reading outside [minDepthMm,
