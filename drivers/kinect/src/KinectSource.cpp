@@ -352,8 +352,11 @@ void KinectSource::close() {
     _thread.join();
   }
   if (_dev) {
-    if (_depthOn) freenect_stop_depth(_dev);
-    if (_colourOn) freenect_stop_video(_dev);
+    // Stopping a stream waits inside libusb for its in-flight transfers; after a USB
+    // failure or a stall (device gone) that wait may never end, so skip it then.
+    const bool healthy = !_failed && _loopResult.load() == 0;
+    if (healthy && _depthOn) freenect_stop_depth(_dev);
+    if (healthy && _colourOn) freenect_stop_video(_dev);
     freenect_close_device(_dev);
     _dev = nullptr;
   }
