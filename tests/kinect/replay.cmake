@@ -32,8 +32,8 @@ if(NOT EXISTS ${_fakenect_dir}/libfreenect.so.0.5 OR (CMAKE_CROSSCOMPILING AND N
                  "Kinect replay tests skipped (install libfreenect-bin / libfreenect0.5:<arch>)")
   return()
 endif()
-if(NOT TARGET cuetrack_recorded OR NOT TARGET cuetrack_synth)
-  message(STATUS "Kinect replay tests skipped: need cuetrack_recorded and cuetrack_synth")
+if(NOT TARGET cuetrack_recorded OR NOT TARGET cuetrack_synth OR NOT TARGET cuetrack_platform_linux)
+  message(STATUS "Kinect replay tests skipped: need cuetrack_recorded, cuetrack_synth, cuetrack_platform_linux")
   return()
 endif()
 
@@ -55,7 +55,7 @@ set_tests_properties(kinect_make_recording_moving kinect_make_recording_stall PR
 # ---- Replay tests: one process per case (fakenect's state is global) ----------------
 add_executable(test_kinect_replay test_kinect_replay.cpp)
 target_link_libraries(test_kinect_replay PRIVATE cuetrack_test_main cuetrack_kinect cuetrack_recorded
-                      cuetrack::core cuetrack_alloc_counter cuetrack_warnings)
+                      cuetrack::core cuetrack_platform_linux cuetrack_alloc_counter cuetrack_warnings)
 
 if(TARGET cuetrack_recorded_cv)  # RGB-D folder reader for cuetrack-record --format rgbd
   target_link_libraries(test_kinect_replay PRIVATE cuetrack_recorded_cv)
@@ -73,6 +73,7 @@ kinect_replay_test(kinect_replay_delivers "[delivers]" ${_rec}/moving)
 kinect_replay_test(kinect_replay_tracks "[tracks]" ${_rec}/moving)
 kinect_replay_test(kinect_replay_stall "[stall]" ${_rec}/stall)
 kinect_replay_test(kinect_replay_stop "[stop]" ${_rec}/moving)
+kinect_replay_test(kinect_replay_signal "[signal]" ${_rec}/stall)
 kinect_replay_test(kinect_replay_depth_only "[depth-only]" ${_rec}/moving)
 kinect_replay_test(kinect_replay_colour_only "[colour-only]" ${_rec}/moving)
 kinect_replay_test(kinect_replay_misuse "[misuse]" ${_rec}/moving)

@@ -6,6 +6,7 @@
 // FAKENECT_PATH=<a recording generated at test time by make_fakenect_recording>.
 #include <catch2/catch.hpp>
 
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -15,6 +16,7 @@
 #include "cuetrack/core/Tracker.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/KinectSource.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 #if defined(CUETRACK_TEST_HAVE_RGBD)
 #include "cuetrack/drivers/OpenCvSources.hpp"
 #endif
@@ -183,6 +185,21 @@ TEST_CASE("a stop request ends the stream cleanly", "[replay][stop]") {
   CHECK(std::string(gKinect.error()).find("stopped") != std::string::npos);
   gKinect.close();
   CHECK_FALSE(gKinect.isOpen());
+}
+
+TEST_CASE("SIGINT stops the stream through the stopRequested hook", "[replay][signal]") {
+  REQUIRE(kinectReplayLibraryLoaded());
+  platform::installStopSignals();
+  KinectOptions options;
+  options.stopRequested = &platform::stopRequested;
+  REQUIRE(gKinect.open(options));
+  REQUIRE(gKinect.next(gLive) == ReadStatus::Ok);
+  // The event thread blocks SIGINT, so the handler runs on an application thread.
+  REQUIRE(std::raise(SIGINT) == 0);
+  CHECK(platform::stopRequested());
+  CHECK(gKinect.next(gLive) == ReadStatus::End);
+  CHECK(std::string(gKinect.error()).find("stopped") != std::string::npos);
+  gKinect.close();
 }
 
 TEST_CASE("depth-only mode with a rate divisor delivers every other depth frame",

@@ -307,19 +307,20 @@ bool KinectSource::open(const KinectOptions& options) {
   if (_colourOn && (r = freenect_start_video(_dev)) < 0)
     return fail("%s: cannot start the colour stream (%d)", _name, r);
 
-  _thread = std::thread([this] { eventLoop(); });
-  return true;
-}
-
-void KinectSource::eventLoop() {
-  // Signals go to the application's threads, not into libusb's poll (EINTR).
-  sigset_t block;
+  // The event thread starts with SIGINT/SIGTERM/SIGHUP blocked (it inherits this
+  // thread's mask), so they reach the application's threads, not libusb's poll (EINTR).
+  sigset_t block, old;
   sigemptyset(&block);
   sigaddset(&block, SIGINT);
   sigaddset(&block, SIGTERM);
   sigaddset(&block, SIGHUP);
-  pthread_sigmask(SIG_BLOCK, &block, nullptr);
+  pthread_sigmask(SIG_BLOCK, &block, &old);
+  _thread = std::thread([this] { eventLoop(); });
+  pthread_sigmask(SIG_SETMASK, &old, nullptr);
+  return true;
+}
 
+void KinectSource::eventLoop() {
   timeval timeout{0, 100000};  // 100 ms: bounds how long a stop request waits
   while (!_pairer.stopRequested()) {
     // fakenect's _timeout variant ignores the timeout; it sleeps to the recorded timing.
