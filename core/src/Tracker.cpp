@@ -75,7 +75,7 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
   _motion2d.positionNoise = _config.positionNoise2d;
   _motion2d.scaleNoise = _config.scaleNoise2d;
   _motion2d.aspectNoise = _config.aspectNoise2d;
-  _motion3d.sizeNoise = _config.adaptCylinderSize ? 0.01f : 0.f;
+  _motion3d.sizeNoise = _config.adaptCylinderSize ? _config.cylinderSizeNoise : 0.f;
   reset();
 }
 
