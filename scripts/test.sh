@@ -3,6 +3,7 @@
 # test: host (with the lint checks), host under ASan+UBSan, aarch64 and armhf under
 # qemu-user, and the fuzz targets for a bounded time. Exits non-zero on any failure
 # and ends with each preset's ctest summary and time. Logs: build/logs/<preset>.log.
+# CUETRACK_PRESETS="host armhf" runs a subset; CUETRACK_FUZZ_SECONDS sets the fuzz time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
