@@ -26,7 +26,7 @@ struct Particle {
 // 2D: first-order AR on the window centre plus scale and aspect random walks.
 // Noise std per frame, as fractions of the window's mean side sqrt(w h).
 struct MotionModel2d {
-  float positionNoise = 0.06f;
+  float positionNoise = 0.09f;
   float velocityNoise = 0.02f;
   float velocityDecay = 0.9f;  // du' = decay du + noise: keeps velocities bounded
   float scaleNoise = 0.025f;   // std of ln(scale) per frame

@@ -50,7 +50,7 @@ struct TrackerConfig {
       0.65f;  // > 0: some near negatives: the estimate scaled by this or 1/this
   float shiftedNegativeFraction =
       0.2f;                          // > 0: some near negatives are the estimate shifted by this
-  float positionNoise2d = 0.06f;     // 2D motion noise per frame, x sqrt(w h)
+  float positionNoise2d = 0.09f;     // 2D motion noise per frame, x sqrt(w h)
   float scaleNoise2d = 0.025f;       // 2D std of ln(scale) per frame
   float aspectNoise2d = 0.01f;       // 2D std of ln(w/h) per frame
   float cylinderSizeNoise = 0.002f;  // adaptCylinderSize: std of ln D and ln H per frame
