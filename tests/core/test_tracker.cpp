@@ -131,7 +131,9 @@ TEST_CASE("every preset tracks a plainly moving target without allocating", "[co
     const Preset p = static_cast<Preset>(i);
     const TrackerConfig cfg = presetConfig(p);
     const bool depth = cfg.useDepth || cfg.stateSpace == StateSpace::Cylinder3d;
-    const RunStats s = run(cfg, 7, emulated ? 20 : 60, depth);
+    TrackerConfig c = cfg;
+    if (emulated) c.numParticles = 500;  // qemu: each core test must stay under a minute
+    const RunStats s = run(c, 7, emulated ? 16 : 60, depth);
     INFO("preset " << presetName(p) << " hits " << s.hits << "/" << s.frames << " mean overlap "
                    << s.overlapSum / s.frames);
     REQUIRE(s.hits >= s.frames * 98 / 100);
@@ -140,14 +142,16 @@ TEST_CASE("every preset tracks a plainly moving target without allocating", "[co
 }
 
 TEST_CASE("the same seed gives the same track bit for bit", "[core][tracker]") {
+  const bool emulated = std::getenv("CUETRACK_EMULATED") != nullptr;
+  const int frames = emulated ? 8 : 25;
   const TrackerConfig cfg = presetConfig(Preset::Test2_1);
-  const RunStats a = run(cfg, 42, 25, true);
-  const RunStats b = run(cfg, 42, 25, true);
-  const RunStats c = run(cfg, 43, 25, true);
+  const RunStats a = run(cfg, 42, frames, true);
+  const RunStats b = run(cfg, 42, frames, true);
+  const RunStats c = run(cfg, 43, frames, true);
   REQUIRE(a.hash == b.hash);
   REQUIRE(a.hash != c.hash);
   const TrackerConfig cfg2 = presetConfig(Preset::Test1_1);
-  REQUIRE(run(cfg2, 5, 20, false).hash == run(cfg2, 5, 20, false).hash);
+  REQUIRE(run(cfg2, 5, frames, false).hash == run(cfg2, 5, frames, false).hash);
 }
 
 // The same bits on x86, aarch64 and armhf (the cross builds run this under qemu): the
