@@ -16,6 +16,7 @@ start=$(date +%s)
 stamp() { echo "== [$(( $(date +%s) - start ))s] $*"; }
 mkdir -p build/logs
 recap=()
+total=0  # ctest tests run over all presets, for the closing line
 
 for preset in $PRESETS; do
   stamp "workflow $preset"
@@ -27,6 +28,8 @@ for preset in $PRESETS; do
     exit 1
   fi
   summary=$(grep -E 'tests passed, [0-9]+ tests failed' "$log" | tail -n 1)
+  n=$(sed -nE 's/.* out of ([0-9]+).*/\1/p' <<<"$summary")
+  total=$(( total + ${n:-0} ))
   recap+=("$(printf '%-10s %5ss  %s' "$preset" $(( $(date +%s) - t0 )) "${summary:-no ctest summary}")")
 done
 
@@ -52,3 +55,5 @@ echo
 echo "== summary"
 printf '%s\n' "${recap[@]}"
 stamp "all tests passed"
+# Plain closing line: every preset's ctest tests (a failure above has already exited).
+echo "tests: $total passed, 0 failed"

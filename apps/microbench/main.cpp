@@ -113,7 +113,8 @@ int main(int argc, char** argv) {
   int icountFrames = -1;
   const char* isaName = nullptr;
   char kernel = 0;  // 0 = all
-  for (int i = 1; i < argc; ++i) {
+  // Every option takes a value: step over both.
+  for (int i = 1; i < argc; i += 2) {
     const char* a = argv[i];
     const char* v = i + 1 < argc ? argv[i + 1] : nullptr;
     bool ok = v != nullptr;
@@ -138,7 +139,6 @@ int main(int argc, char** argv) {
                    v ? v : "", a, cuetrack::kMaxImageWidth, cuetrack::kMaxImageHeight);
       return 2;
     }
-    ++i;
   }
   const Isa* only = nullptr;
   if (isaName) {
