@@ -41,7 +41,7 @@ struct TrackerConfig {
   float weightGain = 25.f;           // lambda: particle weight = exp(lambda * c), c in [-1, 1]
   float learnConfidence = 0.55f;     // update gate: confidence (c + 1) / 2 at the estimate >= this
   float learnConcentration = 0.5f;   // ... and weighted mean overlap of particles with it >= this
-  int negativesPerUpdate = 10;       // new negatives per learning step
+  int negativesPerUpdate = 10;       // negatives added per learning step
   int initialPositives = 9;          // the init box plus slightly shifted copies, kept for good
   float anchorWeight = 2.f;          // boosting weight of a kept initial positive vs a recent one
   int boostCandidates = 48;          // GentleBoost rounds after the first search these best
