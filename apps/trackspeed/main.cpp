@@ -3,7 +3,9 @@
 // qemu-icount's count for N frames minus the count for 0 frames, / N, is the exact
 // per-frame instruction count.
 //   cuetrack-trackspeed [--preset 2.1] [--scene moving] [--frames 150] [--particles N]
-//                       [--weak M] [--icount]
+//                       [--weak M] [--icount] [--hash]
+// --hash also prints an FNV-1a hash of every frame's box, confidence and state: two
+// builds that print the same hash tracked bit for bit alike.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -46,7 +48,7 @@ double median(uint32_t* v, int n) {
 int usage() {
   std::fprintf(stderr,
                "usage: cuetrack-trackspeed [--preset NAME] [--scene NAME] [--frames N] "
-               "[--particles N] [--weak M] [--icount]\n");
+               "[--particles N] [--weak M] [--icount] [--hash]\n");
   return 2;
 }
 
@@ -56,7 +58,7 @@ int main(int argc, char** argv) {
   const char* presetName = "2.1";
   const char* scene = "moving";
   int frames = 150, particles = -1, weak = -1;
-  bool icount = false;
+  bool icount = false, hash = false;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     const bool more = i + 1 < argc;
@@ -72,6 +74,8 @@ int main(int argc, char** argv) {
       weak = std::atoi(argv[++i]);
     else if (!std::strcmp(a, "--icount"))
       icount = true;
+    else if (!std::strcmp(a, "--hash"))
+      hash = true;
     else
       return usage();
   }
@@ -108,6 +112,11 @@ int main(int argc, char** argv) {
     return 1;
   }
   int n = 0, learned = 0;
+  uint64_t h = 14695981039346656037ULL;
+  auto mix = [&h](const void* p, std::size_t bytes) {
+    const unsigned char* b = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ b[i]) * 1099511628211ULL;
+  };
   while (n < frames) {
     const int period = 2 * (kRendered - 1);
     const int k = (n + 1) % period;
@@ -115,6 +124,12 @@ int main(int argc, char** argv) {
     f.timeUs = static_cast<uint64_t>(n + 1) * 33333u;  // time always runs forwards
     const TrackResult r = tracker.update(f);
     learned += r.learned ? 1 : 0;
+    if (hash) {
+      const float v[5] = {r.box.x, r.box.y, r.box.w, r.box.h, r.confidence};
+      mix(v, sizeof v);
+      const uint8_t st = static_cast<uint8_t>(r.state);
+      mix(&st, 1);
+    }
     totalUs[n] = r.timesUs.total;
     featuresUs[n] = r.timesUs.features;
     predictUs[n] = r.timesUs.predict;
@@ -122,6 +137,7 @@ int main(int argc, char** argv) {
     learnUs[n] = r.timesUs.learn;
     ++n;
   }
+  if (hash) std::printf("hash %016llx\n", static_cast<unsigned long long>(h));
   if (icount) {
     std::printf("frames %d learned %d (run under qemu-icount; no clock read)\n", n, learned);
     return 0;
