@@ -1,6 +1,26 @@
 #include "cuetrack/core/StrongClassifier.hpp"
 
+#include <cstring>
+
 namespace cuetrack {
+
+void StrongClassifier::findDistinct() {
+  _numDistinct = 0;
+  for (int m = 0; m < _m; ++m) {
+    const Feature& f = _feature[m];
+    int u = 0;
+    for (; u < _numDistinct; ++u) {
+      const Feature& g = _feature[_distinct[u]];
+      // Bitwise: equal bits give equal responses on any window.
+      if (f.kind == g.kind && std::memcmp(&f.x, &g.x, sizeof f.x) == 0 &&
+          std::memcmp(&f.y, &g.y, sizeof f.y) == 0 && std::memcmp(&f.w, &g.w, sizeof f.w) == 0 &&
+          std::memcmp(&f.h, &g.h, sizeof f.h) == 0)
+        break;
+    }
+    if (u == _numDistinct) _distinct[_numDistinct++] = m;
+    _distinctOf[m] = u;
+  }
+}
 
 bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache,
                              const TrainingSet& set, int m, float* featureErrors, int candidates,
@@ -89,6 +109,7 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
       err += y[i] > 0 ? 0.5f / static_cast<float>(numPos) : 0.5f / static_cast<float>(numNeg);
   }
   _trainingError = err;
+  findDistinct();
   return true;
 }
 

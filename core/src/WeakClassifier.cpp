@@ -133,6 +133,7 @@ void WeakClassifier::fit(const Code* codes, const float* w, const int8_t* y, int
   {
     const float p = s[0][kInvalidBin][0], q = s[1][kInvalidBin][0];
     _invalid = (p - q) / (p + q + kEps);
+    _lut[kLutCells] = _invalid;
   }
   // Weighted likelihood of each magnitude step per bin and class:
   // mass / sigma * exp(-(ln m - mu)^2 / (2 sigma^2)) (the 1/(m sqrt(2 pi)) cancels in the ratio).

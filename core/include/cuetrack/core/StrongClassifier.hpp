@@ -29,29 +29,35 @@ class StrongClassifier {
     for (int i = 0; i < _m; ++i) sum += _weak[i].predict(cuetrack::evaluate(_feature[i], win, t));
     return _m > 0 ? sum / static_cast<float>(_m) : 0.f;
   }
-  // c(x) for n windows at once, weak classifier by weak classifier (each one's table and
-  // feature stay in cache across the windows); windows with valid[i] == 0 get -1.
-  // `order` (optional) is the visiting order of the windows: nearby windows in turn keep
-  // the table rows they read in cache.
+  // c(x) for n windows at once; windows with valid[i] == 0 get -1. Boosting often picks
+  // a feature more than once, so each distinct feature is evaluated once per window (its
+  // table cell kept), then the weak classifiers' values are summed in round order, as
+  // evaluate() does. `order` (optional) is the visiting order of the windows: nearby
+  // windows in turn keep the table rows they read in cache.
   template <typename U, typename S>
   void evaluateMany(const ChannelTables<U, S>& t, const Box* wins, const uint8_t* valid, int n,
                     float* out, const uint16_t* order = nullptr) const {
-    for (int i = 0; i < n; ++i) out[i] = 0.f;
     const ChannelTables<U, S> tl = t;  // a local copy: the compiler keeps it in registers
-    for (int m = 0; m < _m; ++m) {
-      const Feature f = _feature[m];
-      const WeakClassifier& w = _weak[m];
+    for (int u = 0; u < _numDistinct; ++u) {
+      const Feature f = _feature[_distinct[u]];
+      uint16_t* cells = _cells[u];
       switch (f.kind) {
         case FeatureKind::Gray:
-          accumulate<FeatureKind::Gray>(f, w, tl, wins, valid, n, out, order);
+          codeCells<FeatureKind::Gray>(f, tl, wins, valid, n, cells, order);
           break;
         case FeatureKind::Depth:
-          accumulate<FeatureKind::Depth>(f, w, tl, wins, valid, n, out, order);
+          codeCells<FeatureKind::Depth>(f, tl, wins, valid, n, cells, order);
           break;
         case FeatureKind::Colour:
-          accumulate<FeatureKind::Colour>(f, w, tl, wins, valid, n, out, order);
+          codeCells<FeatureKind::Colour>(f, tl, wins, valid, n, cells, order);
           break;
       }
+    }
+    for (int i = 0; i < n; ++i) out[i] = 0.f;
+    for (int m = 0; m < _m; ++m) {
+      const WeakClassifier& w = _weak[m];
+      const uint16_t* cells = _cells[_distinctOf[m]];
+      for (int i = 0; i < n; ++i) out[i] += w.predictCell(cells[i]);
     }
     const float inv = _m > 0 ? 1.f / static_cast<float>(_m) : 0.f;
     for (int i = 0; i < n; ++i) out[i] = valid[i] ? out[i] * inv : -1.f;
@@ -63,21 +69,34 @@ class StrongClassifier {
   float trainingError() const { return _trainingError; }
 
  private:
+  // Table cell of feature f (kind K) for every window; kLutCells for invalid windows.
   template <FeatureKind K, typename U, typename S>
-  static void accumulate(const Feature& f, const WeakClassifier& w, const ChannelTables<U, S>& t,
-                         const Box* wins, const uint8_t* valid, int n, float* out,
-                         const uint16_t* order) {
+  static void codeCells(const Feature& f, const ChannelTables<U, S>& t, const Box* wins,
+                        const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order) {
     for (int k = 0; k < n; ++k) {
       const int i = order != nullptr ? order[k] : k;
-      if (valid[i]) out[i] += w.predict(evaluateKind<K>(f, wins[i], t));
+      cells[i] = static_cast<uint16_t>(
+          valid[i] ? WeakClassifier::cellOf(evaluateKind<K>(f, wins[i], t), K) : kLutCells);
     }
   }
+  void findDistinct();
 
   Feature _feature[kMaxWeakClassifiers];
   WeakClassifier _weak[kMaxWeakClassifiers];
   int _m = 0;
   float _trainingError = 0.f;
   ShareTable _shares;
+  // Distinct features of the weak classifiers: _distinct[u] is the first weak classifier
+  // with the u-th distinct feature, _distinctOf[m] the u of weak classifier m.
+  int _distinct[kMaxWeakClassifiers] = {};
+  int _distinctOf[kMaxWeakClassifiers] = {};
+  int _numDistinct = 0;
+  // evaluateMany's scratch: the table cell of every distinct feature on every window.
+  mutable uint16_t _cells[kMaxWeakClassifiers][kMaxParticles] = {};
 };
+// 32 x 2000 x 2 B = 128,000 B of table cells (Config.hpp's budget).
+static_assert(sizeof(uint16_t[kMaxWeakClassifiers][kMaxParticles]) == 128000u,
+              "evaluateMany's cells: 32 x 2000 x 2 B");
+static_assert(kLutCells < 65535, "cells fit uint16_t");
 
 }  // namespace cuetrack

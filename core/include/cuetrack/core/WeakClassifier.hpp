@@ -122,6 +122,13 @@ class WeakClassifier {
     if (!r.valid) return _invalid;
     return _lut[angleIndex(r.x, r.y) * kLutMags + magIndexSq(r.magSquared(), _kind)];
   }
+  // The table cell a response of a feature of kind `kind` reads: kLutCells when it is
+  // not valid. predictCell(cellOf(r, kind())) == predict(r).
+  static int cellOf(const Response& r, FeatureKind kind) {
+    if (!r.valid) return kLutCells;
+    return angleIndex(r.x, r.y) * kLutMags + magIndexSq(r.magSquared(), kind);
+  }
+  float predictCell(int cell) const { return _lut[cell]; }
   FeatureKind kind() const { return _kind; }
 
   // GentleBoost's weighted squared error of the binned (histogram) fit of these
@@ -133,7 +140,7 @@ class WeakClassifier {
   static float binnedErrorSplit(const Code* codes, const float* w, int split, int n);
 
  private:
-  float _lut[kLutCells]{};
+  float _lut[kLutCells + 1]{};  // the last cell: _invalid (for predictCell)
   float _invalid = 0.f;
   FeatureKind _kind = FeatureKind::Gray;
 };
