@@ -55,8 +55,16 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
     int best = -1;
     float bestErr = 0.f;
     if (round == 0) {
+      float e4[4];
       for (int f = 0; f < pool.size(); ++f) {
-        const float e = WeakClassifier::binnedErrorSplit(cache.row(f), w, split, n);
+        if (f % 4 == 0 && f + 4 <= pool.size()) {
+          const Code* rows[4] = {cache.row(f), cache.row(f + 1), cache.row(f + 2),
+                                 cache.row(f + 3)};
+          WeakClassifier::binnedErrorSplit4(rows, w, split, n, e4);
+        }
+        const float e = f - f % 4 + 4 <= pool.size()
+                            ? e4[f % 4]
+                            : WeakClassifier::binnedErrorSplit(cache.row(f), w, split, n);
         if (featureErrors != nullptr) featureErrors[f] = e;
         if (best < 0 || e < bestErr) {
           best = f;
@@ -75,9 +83,17 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
         }
       }
     } else {
+      float e4[4];
       for (int k = 0; k < numCand; ++k) {
         const int f = cand[k];
-        const float e = WeakClassifier::binnedErrorSplit(cache.row(f), w, split, n);
+        if (k % 4 == 0 && k + 4 <= numCand) {
+          const Code* rows[4] = {cache.row(f), cache.row(cand[k + 1]), cache.row(cand[k + 2]),
+                                 cache.row(cand[k + 3])};
+          WeakClassifier::binnedErrorSplit4(rows, w, split, n, e4);
+        }
+        const float e = k - k % 4 + 4 <= numCand
+                            ? e4[k % 4]
+                            : WeakClassifier::binnedErrorSplit(cache.row(f), w, split, n);
         if (best < 0 || e < bestErr) {
           best = f;
           bestErr = e;

@@ -138,6 +138,10 @@ class WeakClassifier {
   // The same when examples [0, split) are all positive and [split, n) all negative
   // (the training set's layout): no per-example label test.
   static float binnedErrorSplit(const Code* codes, const float* w, int split, int n);
+  // binnedErrorSplit of four features at once (codes[k] the k-th one's codes): the same
+  // sums in the same order, bit for bit, but four independent chains of additions.
+  static void binnedErrorSplit4(const Code* const codes[4], const float* w, int split, int n,
+                                float err[4]);
 
  private:
   float _lut[kLutCells + 1]{};  // the last cell: _invalid (for predictCell)
