@@ -1,5 +1,7 @@
 #include "cuetrack/core/WeakClassifier.hpp"
 
+#include "cuetrack/core/FitKernels.hpp"
+
 namespace cuetrack {
 
 namespace {
@@ -35,7 +37,17 @@ float magOfIndex(int idx, FeatureKind kind) {
   return fmath::sqrtf(fmath::bitsFloat(bits));
 }
 
+namespace {
+float lnMagOfIndex(int q, FeatureKind kind) {
+  const float m = magOfIndex(q, kind);
+  const float minMag = binning(kind).minMag;
+  return fmath::fastLog(m > minMag ? m : minMag);
+}
+}  // namespace
+
 void ShareTable::build() {
+  for (int k = 0; k < kNumFeatureKinds; ++k)
+    for (int q = 0; q < kLutMags; ++q) lnMag[k][q] = lnMagOfIndex(q, static_cast<FeatureKind>(k));
   for (int k = 0; k < kNumFeatureKinds; ++k)
     for (int o = 0; o < kLutAngles; ++o) {
       const float angle = (static_cast<float>(o) + 0.5f) * (fmath::kTwoPi / kLutAngles);
@@ -190,11 +202,13 @@ void WeakClassifier::fit(const Code* codes, const float* w, const int8_t* y, int
   // Weighted likelihood of each magnitude step per bin and class:
   // mass / sigma * exp(-(ln m - mu)^2 / (2 sigma^2)) (the 1/(m sqrt(2 pi)) cancels in the ratio).
   float dens[2][kOrientBins + 1][kLutMags];
-  float lnm[kLutMags];
-  for (int q = 0; q < kLutMags; ++q) {
-    const float m = magOfIndex(q, kind);
-    const float minMag = binning(kind).minMag;
-    lnm[q] = fmath::fastLog(m > minMag ? m : minMag);
+  float lnmLocal[kLutMags];
+  const int k = static_cast<int>(kind);
+  const float* lnm = lnmLocal;
+  if (table != nullptr) {
+    lnm = table->lnMag[k];
+  } else {
+    for (int q = 0; q < kLutMags; ++q) lnmLocal[q] = lnMagOfIndex(q, kind);
   }
   for (int cls = 0; cls < 2; ++cls) {
     for (int b = 0; b <= kOrientBins; ++b) {
@@ -208,28 +222,28 @@ void WeakClassifier::fit(const Code* codes, const float* w, const int8_t* y, int
       if (var < 0.f) var = 0.f;
       var += kVarPrior;
       const float norm = mass / fmath::sqrtf(var);
-      const float k = -0.5f / var;
-      for (int q = 0; q < kLutMags; ++q) {
-        const float d = lnm[q] - mu;
-        dens[cls][b][q] = norm * fmath::fastExp(k * d * d);
-      }
+      fitk::densRow(lnm, mu, -0.5f / var, norm, dens[cls][b], kLutMags);
     }
   }
-  const int k = static_cast<int>(kind);
+  static_assert(kLutMags % 4 == 0, "the fit kernels take 4 steps at a time");
+  if (table != nullptr) {
+    // Shares from the table; a (so the two outer bins) is constant along a row.
+    for (int o = 0; o < kLutAngles; ++o) {
+      const int c = o * kLutMags;
+      const int a = table->a[k][c];
+      const int b1 = 1 + a, b2 = 1 + (a + 1 == kOrientBins ? 0 : a + 1);
+      fitk::bakeRow(table->wCentre[k] + c, table->wA[k] + c, table->wB[k] + c, dens[0][0],
+                    dens[0][b1], dens[0][b2], dens[1][0], dens[1][b1], dens[1][b2], kEps, _lut + c,
+                    kLutMags);
+    }
+    return;
+  }
   for (int o = 0; o < kLutAngles; ++o) {
     const float angle = (static_cast<float>(o) + 0.5f) * (fmath::kTwoPi / kLutAngles);
     for (int q = 0; q < kLutMags; ++q) {
       uint8_t a;
       float wc, wa, wb;
-      if (table != nullptr) {
-        const int c = o * kLutMags + q;
-        a = table->a[k][c];
-        wc = table->wCentre[k][c];
-        wa = table->wA[k][c];
-        wb = table->wB[k][c];
-      } else {
-        shares(angle, magOfIndex(q, kind), kind, &a, &wc, &wa, &wb);
-      }
+      shares(angle, magOfIndex(q, kind), kind, &a, &wc, &wa, &wb);
       const int b1 = 1 + a, b2 = 1 + (a + 1 == kOrientBins ? 0 : a + 1);
       const float p = wc * dens[0][0][q] + wa * dens[0][b1][q] + wb * dens[0][b2][q];
       const float nn = wc * dens[1][0][q] + wa * dens[1][b1][q] + wb * dens[1][b2][q];

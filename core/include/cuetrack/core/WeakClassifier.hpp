@@ -105,7 +105,8 @@ struct ShareTable {
   float wCentre[kNumFeatureKinds][kLutCells];
   float wA[kNumFeatureKinds][kLutCells];
   float wB[kNumFeatureKinds][kLutCells];
-  uint8_t a[kNumFeatureKinds][kLutCells];
+  uint8_t a[kNumFeatureKinds][kLutCells];   // the same along a row (it depends on the angle)
+  float lnMag[kNumFeatureKinds][kLutMags];  // ln of each column's representative magnitude
   void build();
 };
 
