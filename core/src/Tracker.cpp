@@ -264,6 +264,9 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   }
   _lastEstimate = q;
   _lastBox = b;
+  _logSize[0] = fmath::fastLog(b.w);
+  _logSize[1] = fmath::fastLog(b.h);
+  _logSizeRate[0] = _logSizeRate[1] = 0.f;
 
   const PixelRect roi = clipBox(grow(b, kNegativeRange + 0.6f), _imageW, _imageH);
   _channels.compute(frame, roi, _depthFeatures || _is3d);
@@ -395,6 +398,20 @@ TrackResult Tracker::update(const Frame& frame) {
     est = _filter.weightedMean();
     estBox = particleBox(est);
     c = estBox.empty() ? -1.f : _strong.evaluate(_channels.tables(), estBox);
+  }
+  if (!_is3d && _config.sizeGain < 1.f && !estBox.empty()) {
+    // The estimate's size jitters from frame to frame, the target's changes smoothly:
+    // an alpha-beta filter on ln w and ln h (its rate term follows a steady zoom).
+    float side[2] = {estBox.w, estBox.h};
+    for (int a = 0; a < 2; ++a) {
+      const float predicted = _logSize[a] + _logSizeRate[a];
+      const float residual = fmath::fastLog(side[a]) - predicted;
+      _logSize[a] = predicted + _config.sizeGain * residual;
+      _logSizeRate[a] += _config.sizeRateGain * residual;
+      side[a] = fmath::fastExp(_logSize[a]);
+    }
+    estBox = Box{estBox.x + 0.5f * (estBox.w - side[0]), estBox.y + 0.5f * (estBox.h - side[1]),
+                 side[0], side[1]};
   }
   float concentration = 0.f, wsum = 0.f;
   for (int i = 0; i < n; ++i) {

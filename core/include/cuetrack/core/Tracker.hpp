@@ -84,6 +84,8 @@ class Tracker {
   CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
   Box _lastBox{};
+  float _logSize[2] = {0.f, 0.f};      // 2D: smoothed ln w, ln h of the estimate [ln px]
+  float _logSizeRate[2] = {0.f, 0.f};  // ... and their rates [per frame]
   Particle _lastEstimate{};
 
   IntegralChannels _channels;

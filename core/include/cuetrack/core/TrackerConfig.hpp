@@ -54,6 +54,8 @@ struct TrackerConfig {
   float scaleNoise2d = 0.025f;       // 2D std of ln(scale) per frame
   float aspectNoise2d = 0.01f;       // 2D std of ln(w/h) per frame
   float cylinderSizeNoise = 0.002f;  // adaptCylinderSize: std of ln D and ln H per frame
+  float sizeGain = 1.f;              // 2D: alpha-beta filter on ln w, ln h: alpha
+  float sizeRateGain = 0.f;          // ... beta (the rate: steady zooms are followed without lag)
 };
 
 enum class Preset : uint8_t {
