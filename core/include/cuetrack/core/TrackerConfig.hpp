@@ -38,7 +38,7 @@ struct TrackerConfig {
 
   // Implementation parameters (docs/algorithm.md), the same in every preset
   Estimator estimator = Estimator::WeightedMean;
-  float weightGain = 25.f;           // lambda: particle weight = exp(lambda * c), c in [-1, 1]
+  float weightGain = 12.f;           // lambda: particle weight = exp(lambda * c), c in [-1, 1]
   float learnConfidence = 0.55f;     // update gate: confidence (c + 1) / 2 at the estimate >= this
   float learnConcentration = 0.5f;   // ... and weighted mean overlap of particles with it >= this
   int negativesPerUpdate = 10;       // negatives added per learning step
@@ -51,11 +51,11 @@ struct TrackerConfig {
   float shiftedNegativeFraction =
       0.2f;                          // > 0: some near negatives are the estimate shifted by this
   float positionNoise2d = 0.09f;     // 2D motion noise per frame, x sqrt(w h)
-  float scaleNoise2d = 0.025f;       // 2D std of ln(scale) per frame
-  float aspectNoise2d = 0.01f;       // 2D std of ln(w/h) per frame
+  float scaleNoise2d = 0.015f;       // 2D std of ln(scale) per frame
+  float aspectNoise2d = 0.004f;      // 2D std of ln(w/h) per frame
   float cylinderSizeNoise = 0.002f;  // adaptCylinderSize: std of ln D and ln H per frame
-  float sizeGain = 1.f;              // 2D: alpha-beta filter on ln w, ln h: alpha
-  float sizeRateGain = 0.f;          // ... beta (the rate: steady zooms are followed without lag)
+  float sizeGain = 0.3f;             // 2D: alpha-beta filter on ln w, ln h: alpha
+  float sizeRateGain = 0.05f;        // ... beta (the rate: steady zooms are followed without lag)
 };
 
 enum class Preset : uint8_t {
