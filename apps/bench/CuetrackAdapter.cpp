@@ -14,13 +14,36 @@ Tracker& sharedTracker() {
   return *tracker;
 }
 
+// Ablations of the beyond-the-paper switches: "<preset>-<switch off>", e.g.
+// best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder).
+bool parseAblation(const std::string& name, TrackerConfig* out) {
+  struct Off {
+    const char* suffix;
+    bool TrackerConfig::*flag;
+  };
+  static const Off kOffs[] = {{"-nolost", &TrackerConfig::lostDetection},
+                              {"-fixedsize", &TrackerConfig::adaptCylinderSize}};
+  for (const Off& o : kOffs) {
+    const std::string suffix(o.suffix);
+    if (name.size() <= suffix.size() ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    Preset p;
+    if (!parsePreset(name.substr(0, name.size() - suffix.size()).c_str(), &p)) return false;
+    *out = presetConfig(p);
+    out->*(o.flag) = false;
+    return true;
+  }
+  return false;
+}
+
 class CuetrackBench final : public BenchTracker {
  public:
-  explicit CuetrackBench(Preset preset) : _preset(preset) {}
+  explicit CuetrackBench(const TrackerConfig& config) : _config(config) {}
 
   bool init(const CachedFrame& f, const Box& box, uint64_t seed, std::string* err) override {
     Tracker& t = sharedTracker();
-    t.configure(presetConfig(_preset), seed, &_clock);
+    t.configure(_config, seed, &_clock);
     const InitError e = t.init(f.frame(), box);
     if (e == InitError::None) return true;
     *err = std::string("cannot run: init failed: ") + toString(e);
@@ -40,19 +63,30 @@ class CuetrackBench final : public BenchTracker {
   bool hasStages() const override { return true; }
 
  private:
-  Preset _preset;
+  TrackerConfig _config;
   platform::MonotonicClock _clock;
 };
 
 }  // namespace
 
+bool isCuetrackConfig(const std::string& config) {
+  Preset p;
+  TrackerConfig c;
+  return parsePreset(config.c_str(), &p) || parseAblation(config, &c);
+}
+
 std::unique_ptr<BenchTracker> makeCuetrackBench(const std::string& config, std::string* err) {
   Preset p;
-  if (!parsePreset(config.c_str(), &p)) {
-    *err = "unknown configuration '" + config + "' (use 1.1 ... 1.4, 2.1 ... 2.5 or best)";
+  TrackerConfig c;
+  if (parsePreset(config.c_str(), &p)) {
+    c = presetConfig(p);
+  } else if (!parseAblation(config, &c)) {
+    *err = "unknown configuration '" + config +
+           "' (use 1.1 ... 1.4, 2.1 ... 2.5 or best, or an ablation such as best-nolost, "
+           "best-fixedsize)";
     return nullptr;
   }
-  return std::make_unique<CuetrackBench>(p);
+  return std::make_unique<CuetrackBench>(c);
 }
 
 }  // namespace cuetrack::bench

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "Peers.hpp"
+#include "TrackerAdapters.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
 
 namespace cuetrack::bench {
@@ -50,8 +51,9 @@ const char* usage() {
          "  --tracker T[,T]    cuetrack, opencv-kcf, opencv-csrt, opencv-mil, opencv-boosting,\n"
          "                     opencv-medianflow, opencv-mosse, opencv-tld, or opencv-all\n"
          "                     (repeatable; default cuetrack)\n"
-         "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best\n"
-         "                     (repeatable; default best)\n"
+         "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best, or a\n"
+         "                     preset with a beyond-the-paper switch off: best-nolost,\n"
+         "                     best-fixedsize (repeatable; default best)\n"
          "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
          "  --peer-runs N      runs for the OpenCV peers (default: --runs)\n"
          "  --seed S           first seed (default 1)\n"
@@ -105,9 +107,9 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
     } else if (a == "--config") {
       if (!value(&v)) return false;
       for (const std::string& c : splitComma(v)) {
-        Preset p;
-        if (!parsePreset(c.c_str(), &p)) {
-          *err = "--config: unknown configuration '" + c + "' (1.1 ... 1.4, 2.1 ... 2.5, best)";
+        if (!isCuetrackConfig(c)) {
+          *err = "--config: unknown configuration '" + c +
+                 "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize)";
           return false;
         }
         configs.push_back(c);

@@ -11,7 +11,9 @@ namespace cuetrack::bench {
 
 // OpenCV peer `name` (see Peers.hpp); nullptr with *err for an unknown name.
 std::unique_ptr<BenchTracker> makePeerBench(const std::string& name, std::string* err);
-// cuetrack with preset `config` ("1.1" ... "best"); nullptr with *err for an unknown one.
+// cuetrack with preset `config` ("1.1" ... "best") or an ablation of one ("best-nolost",
+// "best-fixedsize": that beyond-the-paper switch off); nullptr with *err for an unknown one.
 std::unique_ptr<BenchTracker> makeCuetrackBench(const std::string& config, std::string* err);
+bool isCuetrackConfig(const std::string& config);
 
 }  // namespace cuetrack::bench

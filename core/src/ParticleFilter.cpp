@@ -36,6 +36,28 @@ Box projectCylinder(const Particle& q, const CameraIntrinsics& k) {
   return Box{u - 0.5f * w, v - 0.5f * h, w, h};
 }
 
+bool keepInView(Particle& q, const CameraIntrinsics& k, int imageW, int imageH) {
+  bool moved = false;
+  if (!(q.p[2] >= kMinCylinderDepthMm) || q.p[2] > static_cast<float>(kMaxDepthMm)) {
+    q.p[2] = q.p[2] > static_cast<float>(kMaxDepthMm) ? static_cast<float>(kMaxDepthMm)
+                                                      : kMinCylinderDepthMm;
+    q.v[2] = 0.f;
+    moved = true;
+  }
+  const float z = q.p[2];
+  const float lim[2] = {static_cast<float>(imageW), static_cast<float>(imageH)};
+  const float f[2] = {k.fx, k.fy}, c[2] = {k.cx, k.cy};
+  for (int a = 0; a < 2; ++a) {
+    const float u = f[a] * q.p[a] / z + c[a];
+    if (u >= 0.f && u <= lim[a]) continue;
+    const float edge = u < 0.f ? 0.f : lim[a];
+    q.p[a] = (edge - c[a]) * z / f[a];
+    q.v[a] = 0.f;
+    moved = true;
+  }
+  return moved;
+}
+
 bool correctDepth(Particle& q, const IntegralChannels& ch, const CameraIntrinsics& k, float dtS,
                   int imageW, int imageH) {
   const Box b = projectCylinder(q, k);

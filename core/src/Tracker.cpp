@@ -8,6 +8,14 @@ constexpr float kNegativeRange = 1.5f;  // negatives within +-1.5 window sizes
 constexpr float kNegativeMaxOverlap = 0.3f;
 constexpr float kRoiMargin = 1.6f;  // ROI: particle boxes + this x mean size per side
 constexpr float kLostSpread = 3.f;  // motion noise gain while lost
+// Re-acquisition while lost: every kSearchEvery-th particle is drawn anew each frame,
+// half anywhere in the image, half around the last confidently learnt estimate within
+// a radius that grows by kSearchGrowth window sides per frame lost; the rest of the
+// cloud keeps following the best candidate so the detector can confirm it.
+constexpr int kSearchEvery = 2;
+constexpr float kSearchGrowth = 0.25f;
+constexpr float kDepthJumpRatio = 0.75f;  // 3D: estimate depth / last learnt depth (or inverse)
+constexpr float kSearchInside = 0.8f;     // while lost, windows must lie this much inside
 constexpr float kDefaultDtS = 1.f / 30.f;
 
 float frameDtS(uint64_t last, uint64_t now) {
@@ -87,6 +95,7 @@ void Tracker::reset() {
   _state = TrackState::Idle;
   _lost.reset();
   _lastBox = Box{};
+  _lostFrames = 0;
 }
 
 Box Tracker::clampToImage(const Box& b) const {
@@ -131,6 +140,37 @@ bool Tracker::medianDepthMm(const Frame& frame, const Box& box, float* out) {
     }
   }
   return false;
+}
+
+Particle Tracker::searchParticle(bool wide) {
+  Particle q = _lastEstimate;
+  q.v[0] = q.v[1] = q.v[2] = 0.f;
+  const float iw = static_cast<float>(_imageW), ih = static_cast<float>(_imageH);
+  float u, v;
+  if (wide) {
+    u = _rng.uniform(0.f, iw);
+    v = _rng.uniform(0.f, ih);
+  } else {
+    const Box a = particleBox(_lastEstimate);
+    const float r =
+        fmath::sqrtf(a.w * a.h) * (0.5f + kSearchGrowth * static_cast<float>(_lostFrames));
+    u = fmath::clampf(a.x + 0.5f * a.w + r * _rng.gaussianFast(), 0.f, iw);
+    v = fmath::clampf(a.y + 0.5f * a.h + r * _rng.gaussianFast(), 0.f, ih);
+  }
+  if (_is3d) {
+    // At the last depth on the ray through (u, v): the depth correction then puts it on
+    // the surface measured there, at the size the target would have there.
+    const float z = q.p[2];
+    q.p[0] = (u - _k.cx) * z / _k.fx;
+    q.p[1] = (v - _k.cy) * z / _k.fy;
+  } else {
+    const float sc = fmath::fastExp(0.15f * _rng.gaussianFast());
+    q.p[0] = u;
+    q.p[1] = v;
+    q.size[0] *= sc;
+    q.size[1] *= sc;
+  }
+  return q;
 }
 
 void Tracker::addExample(const Box& win, bool positive) {
@@ -243,6 +283,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _k = frame.intrinsics;
   _rng.reseed(_seed);
   _lost.reset();
+  _lostFrames = 0;
 
   Particle q;
   if (_is3d) {
@@ -263,6 +304,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     q.size[1] = b.h;
   }
   _lastEstimate = q;
+  _depthRefMm = q.p[2];
   _lastBox = b;
   _logSize[0] = fmath::fastLog(b.w);
   _logSize[1] = fmath::fastLog(b.h);
@@ -314,16 +356,20 @@ TrackResult Tracker::update(const Frame& frame) {
   const uint64_t t0 = now();
   const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
   _lastTimeUs = frame.timeUs;
-  const float spread = _state == TrackState::Lost ? kLostSpread : 1.f;
+  const bool wasLost = _state == TrackState::Lost;
+  const float spread = wasLost ? kLostSpread : 1.f;
   const int n = _filter.size();
+  if (wasLost) ++_lostFrames;
 
   // Predict, and find the region the particles (and negatives around them) can touch.
   PixelRect roi{};
   float meanW = 0.f, meanH = 0.f;
   for (int i = 0; i < n; ++i) {
     Particle& q = _filter[i];
+    if (wasLost && i % kSearchEvery == 0) q = searchParticle((i / kSearchEvery) % 2 == 0);
     if (_is3d) {
       _motion3d.predict(q, _rng, dtS, spread);
+      keepInView(q, _k, _imageW, _imageH);
     } else {
       _motion2d.predict(q, _rng, spread);
       // Keep windows sane and near the image.
@@ -364,6 +410,12 @@ TrackResult Tracker::update(const Frame& frame) {
     const Box& b = _boxes[i];
     _valid[i] = !b.empty() && b.w >= 4.f && b.h >= 4.f && b.x + b.w > 0.f && b.y + b.h > 0.f &&
                 b.x < static_cast<float>(_imageW) && b.y < static_cast<float>(_imageH);
+    // Searching: a window must see most of the target to re-detect it (windows half
+    // outside the image score on whatever their features read there).
+    if (wasLost && _valid[i] != 0) {
+      const PixelRect c = clipBox(b, _imageW, _imageH);
+      _valid[i] = static_cast<float>(c.width() * c.height()) >= kSearchInside * b.area();
+    }
   }
   // Visit particles row band by row band (counting sort on the window's top edge, 8 px
   // bands): the feature reads of consecutive particles then share cache lines.
@@ -422,18 +474,37 @@ TrackResult Tracker::update(const Frame& frame) {
   const float confidence = 0.5f * (c + 1.f);
   const uint64_t t3 = now();
 
-  if (_config.lostDetection) _state = _lost.step(_state, confidence);
+  bool occluded = false;
+  if (_config.lostDetection) {
+    // 3D: the estimate jumped well in front of or behind where the target was last
+    // confirmed: the depth correction has put the cloud on something passing in front,
+    // or on the background (either can look enough like the target to keep the
+    // confidence above the lost threshold). Counts as a miss, and is not learnt.
+    const float zRef = _depthRefMm;
+    occluded = _is3d && !wasLost && !_lost.onProbation() &&
+               (est.p[2] < kDepthJumpRatio * zRef || kDepthJumpRatio * est.p[2] > zRef);
+    _state = _lost.step(_state, occluded ? 0.f : confidence);
+    if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
+  }
+  // Just found again (on probation): the estimate may be off the target's centre, or
+  // on a look-alike; learn only once the detector has confirmed it.
   bool learned = false;
-  if (!estBox.empty() && _gate.open(confidence, concentration, _state)) {
+  if (!estBox.empty() && !occluded && !_lost.onProbation() &&
+      _gate.open(confidence, concentration, _state)) {
     _lastEstimate = est;
     learn(clampToImage(estBox), roi);
     learned = true;
   }
+  // The depth the target was last confirmed at: learnt, or found again (it may have
+  // moved in depth while hidden).
+  if (learned || (_state == TrackState::Tracking && (wasLost || _lost.onProbation())))
+    _depthRefMm = est.p[2];
   const uint64_t t4 = now();
 
   _filter.resample(_rng);
-  if (_state == TrackState::Lost) {
-    // Searching: forget velocities so the cloud spreads around the last place seen.
+  if (_state == TrackState::Lost || wasLost) {
+    // Searching (or just found): forget velocities, including the jumps the depth
+    // correction gave search particles, so the cloud spreads around where it is.
     for (int i = 0; i < n; ++i) _filter[i].v[0] = _filter[i].v[1] = _filter[i].v[2] = 0.f;
   }
   if (!estBox.empty()) _lastBox = estBox;

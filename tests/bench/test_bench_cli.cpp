@@ -50,6 +50,9 @@ TEST_CASE("a bad command line exits 2 with one clear line and the usage") {
   CHECK(r.out.find("unknown tracker 'opencv-goturn'") != std::string::npos);
   r = runBench("--config 3.1 synth:moving");
   CHECK(r.exitCode == 2);
+  r = runBench("--config best-nothing synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("unknown configuration 'best-nothing'") != std::string::npos);
   r = runBench("");
   CHECK(r.exitCode == 2);
   CHECK(r.out.find("no sequence given") != std::string::npos);
@@ -79,6 +82,16 @@ TEST_CASE("a missing sequence is reported, the next one runs, the exit code says
   REQUIRE(seqs[1].get("overlap")->kind == minijson::Value::Number);
   CHECK(seqs[1].get("overlap")->n > 30.0);
   CHECK(seqs[1].get("allocs")->n == 0.0);  // the core does not allocate while tracking
+}
+#endif
+
+#if CUETRACK_BENCH_TEST_SYNTH
+TEST_CASE("ablations of best (a beyond-the-paper switch off) run as configurations") {
+  const Run r =
+      runBench("synth:moving --frames 6 --runs 1 --quiet --config best-nolost,best-fixedsize");
+  CHECK(r.exitCode == 0);
+  CHECK(r.out.find("best-nolost") != std::string::npos);
+  CHECK(r.out.find("best-fixeds") != std::string::npos);
 }
 #endif
 

@@ -16,6 +16,8 @@ FrameSlot slot;
 
 struct Stats {
   int frames = 0, hits = 0;
+  int framesAfter = 0, hitsAfter = 0;  // from frame `after` of runScene on
+  int lostWhileHidden = 0;             // frames reported Lost while the target is hidden
   double overlapSum = 0;
   uint64_t allocations = 0;
   float hitRate() const {
@@ -23,7 +25,8 @@ struct Stats {
   }
 };
 
-Stats runScene(const char* scene, Preset preset, uint64_t seed, int frames) {
+Stats runScene(const char* scene, const TrackerConfig& config, uint64_t seed, int frames,
+               int after = 1 << 30) {
   SceneSpec spec;
   REQUIRE(makeScene(scene, &spec));
   spec.frameCount = frames;
@@ -33,7 +36,7 @@ Stats runScene(const char* scene, Preset preset, uint64_t seed, int frames) {
   if (src != nullptr) src->~SyntheticSource();
   src = new (storage) SyntheticSource(spec, seed);
   Stats s;
-  tracker.configure(presetConfig(preset), seed);
+  tracker.configure(config, seed);
   REQUIRE(src->next(slot) == ReadStatus::Ok);
   const test::AllocScope scope;
   REQUIRE(tracker.init(slot.frame(), slot.groundTruth) == InitError::None);
@@ -43,9 +46,18 @@ Stats runScene(const char* scene, Preset preset, uint64_t seed, int frames) {
     s.overlapSum += o;
     s.hits += o > 1.f / 3.f ? 1 : 0;
     ++s.frames;
+    if (slot.index >= after) {
+      s.hitsAfter += o > 1.f / 3.f ? 1 : 0;
+      ++s.framesAfter;
+    }
+    if (slot.groundTruth.empty() && r.state == TrackState::Lost) ++s.lostWhileHidden;
   }
   s.allocations = scope.allocations();
   return s;
+}
+
+Stats runScene(const char* scene, Preset preset, uint64_t seed, int frames) {
+  return runScene(scene, presetConfig(preset), seed, frames);
 }
 }  // namespace
 
@@ -82,4 +94,32 @@ TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2
   // For the record (the paper's point): the 2D grayscale preset may lose it.
   const Stats g = runScene("twin-crossing", Preset::Test2_5, 5, 150);
   WARN("preset 2.5 on twin-crossing: hit rate " << g.hitRate());
+}
+
+TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core][e2e]") {
+  if (emulated()) {
+    WARN("occlusion skipped under emulation (150 frames at 640x480 take too long in qemu)");
+    return;
+  }
+  // The box hides the target completely from about frame 67 to 90; from frame 96 on it
+  // is in full view again. Without re-acquisition the tracker never finds it again.
+  constexpr int kAfter = 100;
+  float sum = 0.f;
+  for (uint64_t seed = 1; seed <= 5; ++seed) {
+    const Stats s = runScene("occlusion", presetConfig(Preset::Best), seed, 150, kAfter);
+    const float after = static_cast<float>(s.hitsAfter) / static_cast<float>(s.framesAfter);
+    INFO("seed " << seed << ": hit rate " << s.hitRate() << ", after frame " << kAfter << " "
+                 << after << ", lost while hidden " << s.lostWhileHidden);
+    CHECK(s.lostWhileHidden >= 10);  // it knows the target is gone
+    CHECK(s.allocations == 0);
+    sum += after;
+  }
+  INFO("mean hit rate after frame " << kAfter << ": " << sum / 5.f);
+  CHECK(sum / 5.f >= 0.8f);
+  TrackerConfig noLost = presetConfig(Preset::Best);
+  noLost.lostDetection = false;
+  const Stats n = runScene("occlusion", noLost, 1, 150, kAfter);
+  WARN("best without lost detection, after frame "
+       << kAfter << ": hit rate "
+       << static_cast<float>(n.hitsAfter) / static_cast<float>(n.framesAfter));
 }

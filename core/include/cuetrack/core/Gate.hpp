@@ -20,26 +20,53 @@ struct UpdateGate {
 };
 
 // Lost after `lostAfter` consecutive frames with confidence below `lostBelow`;
-// found again after `foundAfter` consecutive frames at or above `foundAbove`.
+// found again after `foundAfter` consecutive frames at or above the found threshold:
+// `foundAbove`, or, if higher, the confidence the target typically had while tracked
+// (a running mean over tracked frames at or above `foundAbove`) less `foundMargin`, so a
+// look-alike that scores well below the real target is not taken for it. A target
+// found again is on probation for `probationFrames` more frames: one frame below
+// `foundAbove` then and it is lost again, and the tracker does not learn until the
+// probation is over.
 class LostDetector {
  public:
   float lostBelow = 0.42f;
   float foundAbove = 0.58f;
   int lostAfter = 4;
   int foundAfter = 2;
+  int probationFrames = 8;
+  float foundMargin = 0.15f;
+  float typicalRate = 0.1f;  // weight of a new frame in the running mean
 
-  void reset() { _low = _high = 0; }
+  void reset() {
+    _low = _high = _probation = 0;
+    _typical = 0.f;
+  }
+  bool onProbation() const { return _probation > 0; }
+  float foundThreshold() const {
+    return _typical - foundMargin > foundAbove ? _typical - foundMargin : foundAbove;
+  }
   TrackState step(TrackState s, float confidence) {
+    const float found = foundThreshold();
+    if (s == TrackState::Tracking && _probation > 0) {
+      --_probation;
+      if (confidence < foundAbove) {
+        _low = _high = _probation = 0;
+        return TrackState::Lost;
+      }
+      return s;
+    }
     if (s == TrackState::Tracking) {
+      if (confidence >= foundAbove) _typical += typicalRate * (confidence - _typical);
       _low = confidence < lostBelow ? _low + 1 : 0;
       if (_low >= lostAfter) {
         _low = _high = 0;
         return TrackState::Lost;
       }
     } else if (s == TrackState::Lost) {
-      _high = confidence >= foundAbove ? _high + 1 : 0;
+      _high = confidence >= found ? _high + 1 : 0;
       if (_high >= foundAfter) {
         _low = _high = 0;
+        _probation = probationFrames;
         return TrackState::Tracking;
       }
     }
@@ -47,7 +74,8 @@ class LostDetector {
   }
 
  private:
-  int _low = 0, _high = 0;
+  int _low = 0, _high = 0, _probation = 0;
+  float _typical = 0.f;  // running mean of the tracked confidence
 };
 
 }  // namespace cuetrack

@@ -50,6 +50,14 @@ struct MotionModel3d {
 // rectangle fx D / z wide and fy H / z high around the projected centre.
 Box projectCylinder(const Particle& q, const CameraIntrinsics& k);
 
+// A guard (every 3D preset): keep the cylinder's projected centre inside the image and
+// its centre depth in [kMinCylinderDepthMm, kMaxDepthMm], zeroing the velocity
+// component that pushed it out. A particle whose centre leaves the image has nothing to
+// be weighed on (no depth correction, no colour) and would otherwise coast away on its
+// velocity; while the target is in view the guard never acts. Returns true when it did.
+inline constexpr float kMinCylinderDepthMm = 300.f;
+bool keepInView(Particle& q, const CameraIntrinsics& k, int imageW, int imageH);
+
 // Depth correction phi (paper eq. 2): average the valid depth inside the inner 10%
 // of the projection, move the particle along its viewing ray so its front surface
 // (centre depth - D/2) lies at that depth, and add the move / dt to its velocity.

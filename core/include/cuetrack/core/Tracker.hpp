@@ -68,6 +68,7 @@ class Tracker {
   void addExample(const Box& win, bool positive);
   void learn(const Box& estimate, const PixelRect& roi);
   bool medianDepthMm(const Frame& frame, const Box& box, float* out);
+  Particle searchParticle(bool wide);
 
   TrackerConfig _config{};
   uint64_t _seed = 0;
@@ -87,6 +88,8 @@ class Tracker {
   float _logSize[2] = {0.f, 0.f};      // 2D: smoothed ln w, ln h of the estimate [ln px]
   float _logSizeRate[2] = {0.f, 0.f};  // ... and their rates [per frame]
   Particle _lastEstimate{};
+  int _lostFrames = 0;      // lost detection (beyond the paper): frames since declared lost
+  float _depthRefMm = 0.f;  // ... 3D: depth of the last confirmed estimate [mm]
 
   IntegralChannels _channels;
   FeaturePool _pool;
