@@ -2,6 +2,7 @@
 // no allocation per frame.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -205,6 +206,57 @@ TEST_CASE("approach scene: the box grows at least 4x", "[synth]") {
   const float h0 = slot->groundTruth.h;
   REQUIRE(src->render(149, *slot));
   CHECK(slot->groundTruth.h > 4.f * h0);
+}
+
+TEST_CASE("turn scene: the box yaws 90 degrees, its width shrinks ~3x, truth follows it",
+          "[synth]") {
+  SceneSpec spec = scene("turn", 150);
+  spec.colourNoise = 0;
+  spec.disparityNoiseRaw = 0;
+  auto src = std::make_unique<SyntheticSource>(spec, 3);
+  auto slot = std::make_unique<FrameSlot>();
+  SceneSpec empty = spec;
+  empty.objects[0].motion.startMm[2] = -5000.f;  // behind the camera: not drawn
+  auto bg = std::make_unique<SyntheticSource>(empty, 3);
+  auto bgSlot = std::make_unique<FrameSlot>();
+  float w0 = 0.f;
+  for (int f : {0, 40, 75, 110, 149}) {
+    REQUIRE(src->render(f, *slot));
+    REQUIRE(bg->render(f, *bgSlot));
+    int x0 = 1 << 20, y0 = 1 << 20, x1 = -1, y1 = -1;
+    for (int y = 0; y < 480; ++y)
+      for (int x = 0; x < 640; ++x)
+        if (std::memcmp(&slot->rgb.data()[y * 640 + x], &bgSlot->rgb.data()[y * 640 + x], 3)) {
+          x0 = std::min(x0, x);
+          y0 = std::min(y0, y);
+          x1 = std::max(x1, x);
+          y1 = std::max(y1, y);
+        }
+    const Box gt = slot->groundTruth;
+    INFO("frame " << f << " gt " << gt.x << "," << gt.y << " " << gt.w << "x" << gt.h << " px "
+                  << x0 << "," << y0 << ".." << x1 << "," << y1);
+    REQUIRE(x1 >= 0);
+    // The colour changes are the target itself (no shadow in colour): the box's silhouette.
+    CHECK(std::abs(x0 - gt.x) <= 1.5f);
+    CHECK(std::abs(y0 - gt.y) <= 1.5f);
+    CHECK(std::abs(x1 + 1 - (gt.x + gt.w)) <= 1.5f);
+    CHECK(std::abs(y1 + 1 - (gt.y + gt.h)) <= 1.5f);
+    CHECK(gt.x > 0.f);  // inside the image all along
+    CHECK(gt.x + gt.w < 640.f);
+    // Depth on the ray through the box's centre: where that ray leaves the yawed box
+    // towards the camera (the ray parameter is camera depth).
+    const SynthTruth& t = src->truth();
+    const float dx = t.centreMm[0] / t.centreMm[2], dy = t.centreMm[1] / t.centreMm[2];
+    const float c = std::cos(t.yawRad), sn = std::sin(t.yawRad);
+    const float lx = std::abs(c * dx + sn), lz = std::abs(-sn * dx + c);
+    const float back = std::min({lx > 0.f ? 200.f / lx : 1e9f, 60.f / lz, 100.f / std::abs(dy)});
+    const int cu = static_cast<int>(slot->intrinsics.cx + slot->intrinsics.fx * dx);
+    const int cv = static_cast<int>(slot->intrinsics.cy + slot->intrinsics.fy * dy);
+    CHECK(slot->depthMm.data()[cv * 640 + cu] == Approx(t.centreMm[2] - back).margin(20));
+    if (f == 0) w0 = gt.w;
+    if (f == 149) CHECK(gt.w < w0 / 2.5f);
+  }
+  CHECK(w0 > 90.f);
 }
 
 TEST_CASE("untextured scene: colour cannot see the target, depth can", "[synth]") {

@@ -42,7 +42,7 @@ const char* usageText() {
          "\n"
          "source (default: the Kinect when one is plugged in, else the synthetic scene 'moving'):\n"
          "  --source kinect|synth[:SCENE]|PATH   SCENE: moving twin-crossing occlusion untextured\n"
-         "                                       lighting approach box; PATH: a fakenect\n"
+         "                                       lighting approach box turn; PATH: a fakenect\n"
          "                                       recording folder (host builds with OpenCV\n"
          "                                       also read RGB-D folders, OTB folders, .avi)\n"
          "target (default: the ground truth where the target first shows, else wait for START):\n"

@@ -105,7 +105,7 @@ inline Rgb8 shade(Rgb8 c, float nx, float ny, float nz) {
 }
 
 constexpr const char* kSceneNames[] = {"moving",   "twin-crossing", "occlusion", "untextured",
-                                       "lighting", "approach",      "box"};
+                                       "lighting", "approach",      "box",       "turn"};
 constexpr int kNumScenes = static_cast<int>(sizeof(kSceneNames) / sizeof(kSceneNames[0]));
 
 SceneObject texturedCylinder() {
@@ -216,6 +216,23 @@ bool makeScene(const char* name, SceneSpec* out) {
     t.motion.periodS[0] = 2.5f;
     s.objects[0] = t;
     s.numObjects = 1;
+  } else if (n == "turn") {
+    // The paper's Tank case: initialised side-on, then turning to face the camera. A
+    // 400 x 120 x 200 mm box at 2 m yaws 90 degrees in 5 s (image width ~105 px -> ~35 px)
+    // while drifting 300 mm to the right.
+    SceneObject b;
+    b.shape = ShapeKind::Box;
+    b.radiusMm = 200.f;
+    b.halfDepthMm = 60.f;
+    b.heightMm = 200.f;
+    b.yawRateRadPerS = kPi / 2 / 5.f;
+    b.texture = {TextureKind::Patches, {60, 170, 90}, {150, 40, 120}, 303, 4.f};
+    b.motion.startMm[0] = -150.f;
+    b.motion.startMm[1] = 250.f;
+    b.motion.startMm[2] = 2000.f;
+    b.motion.velocityMmPerS[0] = 60.f;
+    s.objects[0] = b;
+    s.numObjects = 1;
   } else {  // box
     SceneObject b;
     b.shape = ShapeKind::Box;
@@ -315,6 +332,11 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
   for (int i = 0; i < n; ++i) {
     posed[i].index = i;
     objectPosition(i, tS, posed[i].c);
+    const SceneObject& o = _spec.objects[i];
+    const float yaw = o.yawRad + o.yawRateRadPerS * tS;
+    posed[i].yawed = o.shape == ShapeKind::Box && yaw != 0.f;
+    posed[i].cosYaw = posed[i].yawed ? std::cos(yaw) : 1.f;
+    posed[i].sinYaw = posed[i].yawed ? std::sin(yaw) : 0.f;
   }
   for (int i = 1; i < n; ++i)
     for (int j = i; j > 0 && posed[j].c[2] > posed[j - 1].c[2]; --j) {
@@ -333,6 +355,7 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
   }
   _truth.radiusMm = tgt.radiusMm;
   _truth.heightMm = tgt.heightMm;
+  if (tgt.shape == ShapeKind::Box) _truth.yawRad = tgt.yawRad + tgt.yawRateRadPerS * tS;
   int visible = 0;
   const uint8_t target = static_cast<uint8_t>(_spec.targetIndex);
   for (int i = 0; i < w * h; ++i) visible += _owner[i] == target;
@@ -424,10 +447,18 @@ Box SyntheticSource::projectObject(const Posed& p) const {
       add(x, p.c[1] - hh, z);
       add(x, p.c[1] + hh, z);
     }
-  } else {
+  } else if (!p.yawed) {
     for (int i = 0; i < 8; ++i)
       add(p.c[0] + ((i & 1) ? o.radiusMm : -o.radiusMm), p.c[1] + ((i & 2) ? hh : -hh),
           p.c[2] + ((i & 4) ? o.halfDepthMm : -o.halfDepthMm));
+  } else {
+    // The 8 corners of the yawed box: a convex body's silhouette is their hull.
+    for (int i = 0; i < 8; ++i) {
+      const float lx = (i & 1) ? o.radiusMm : -o.radiusMm;
+      const float lz = (i & 4) ? o.halfDepthMm : -o.halfDepthMm;
+      add(p.c[0] + p.cosYaw * lx - p.sinYaw * lz, p.c[1] + ((i & 2) ? hh : -hh),
+          p.c[2] + p.sinYaw * lx + p.cosYaw * lz);
+    }
   }
   const float W = static_cast<float>(_spec.width), H = static_cast<float>(_spec.height);
   if (u0 < 0.f) u0 = 0.f;
@@ -443,7 +474,9 @@ void SyntheticSource::renderObject(const Posed& p, FrameSlot& out, bool isTarget
   const float X = p.c[0], Y = p.c[1], Z = p.c[2];
   const float R = o.radiusMm, hh = o.heightMm * 0.5f;
   const float D = o.shape == ShapeKind::Cylinder ? R : o.halfDepthMm;
-  if (Z - D < 50.f) return;  // behind or touching the camera: not drawn
+  // Nearest z of the object: a yawed box reaches |s| R + |c| D in front of its centre.
+  const float frontMm = p.yawed ? std::fabs(p.sinYaw) * R + std::fabs(p.cosYaw) * o.halfDepthMm : D;
+  if (Z - frontMm < 50.f) return;  // behind or touching the camera: not drawn
   const Box bb = projectObject(p);
   if (bb.empty()) return;
   const int w = _spec.width;
@@ -455,6 +488,10 @@ void SyntheticSource::renderObject(const Posed& p, FrameSlot& out, bool isTarget
   const float invTexel = 1.f / o.texture.texelMm;
   const float yTop = Y - hh, yBot = Y + hh;
   const uint8_t owner = static_cast<uint8_t>(p.index);
+  // Yawed box: the camera (ray origin) in the box's frame, camera -> local being
+  // lx = c x + s z, lz = -s x + c z.
+  const float cw = p.cosYaw, sw = p.sinYaw;
+  const float ox = -(cw * X + sw * Z), oz = -(-sw * X + cw * Z);
   int hits = 0;
   for (int v = vb; v < ve; ++v) {
     const float dy = (static_cast<float>(v) - _k.cy) * _invFy;
@@ -489,6 +526,62 @@ void SyntheticSource::renderObject(const Posed& p, FrameSlot& out, bool isTarget
           s = ex;
           q = ez;
         }
+      } else if (p.yawed) {
+        // Slabs in the box's frame (the ray parameter is still camera depth); the
+        // entry face is the one with the largest near distance.
+        const float lx = cw * dx + sw, lz = -sw * dx + cw;  // ray direction, local
+        float tn = -1e30f, tf = 1e30f;
+        int face = 2;
+        auto slab = [&](float o0, float d, float half, int f) {
+          if (d == 0.f) return o0 >= -half && o0 <= half;
+          float a = (-half - o0) / d, b = (half - o0) / d;
+          if (a > b) {
+            const float tmp = a;
+            a = b;
+            b = tmp;
+          }
+          if (a > tn) {
+            tn = a;
+            face = f;
+          }
+          if (b < tf) tf = b;
+          return true;
+        };
+        if (!slab(oz, lz, D, 2) || !slab(ox, lx, R, 0)) continue;
+        if (dy != 0.f) {
+          float a = yTop / dy, b = yBot / dy;
+          if (a > b) {
+            const float tmp = a;
+            a = b;
+            b = tmp;
+          }
+          if (a > tn) {
+            tn = a;
+            face = 1;
+          }
+          if (b < tf) tf = b;
+        } else if (yTop > 0.f || yBot < 0.f) {
+          continue;
+        }
+        if (tn > tf || tn <= 0.f) continue;
+        t = tn;
+        const float hx = ox + t * lx, hz = oz + t * lz, py = t * dy;  // hit point, local
+        float nlx = 0.f, nlz = 0.f;
+        if (face == 0) {
+          nlx = lx > 0.f ? -1.f : 1.f;
+          s = hz + D;
+          q = py - yTop;
+        } else if (face == 1) {
+          ny = dy > 0.f ? -1.f : 1.f;
+          s = hx + R;
+          q = hz + D;
+        } else {
+          nlz = lz > 0.f ? -1.f : 1.f;
+          s = hx + R;
+          q = py - yTop;
+        }
+        nx = cw * nlx - sw * nlz;  // the normal back in camera coordinates
+        nz = sw * nlx + cw * nlz;
       } else {
         // Slabs; the entry face is the one with the largest near distance.
         float tn = Z - D, tf = Z + D;

@@ -57,7 +57,7 @@ struct MotionSpec {
 
 enum class ShapeKind : uint8_t {
   Cylinder,  // upright (axis along camera y)
-  Box,       // axis-aligned
+  Box,       // upright; axis-aligned unless yawed (SceneObject::yawRad, yawRateRadPerS)
 };
 
 struct SceneObject {
@@ -65,6 +65,11 @@ struct SceneObject {
   float radiusMm = 60.f;     // cylinder radius, or box half-width along x [mm]
   float halfDepthMm = 60.f;  // box half-depth along z [mm] (cylinders: unused)
   float heightMm = 200.f;    // [mm]
+  // Boxes: yaw about the vertical (camera y) axis, yawRad + yawRateRadPerS * t; positive
+  // turns the box's +x side away from the camera (towards +z). Cylinders: unused.
+  // 0 and 0 (the default) renders exactly the axis-aligned box.
+  float yawRad = 0.f;
+  float yawRateRadPerS = 0.f;
   MotionSpec motion{};
   TextureSpec texture{};
   bool shaded = true;  // Lambertian shading; off for the untextured scene
@@ -118,6 +123,7 @@ struct SceneSpec {
 //   lighting      moving target under slow brightness change plus a step (lights dimmed)
 //   approach      target comes from 4.5 m to 0.8 m: strong perspective scale change
 //   box           a textured box moving (shape variety)
+//   turn          an elongated box turns 90 degrees from side-on to end-on: image width ~1/3
 bool makeScene(const char* name, SceneSpec* out);
 int sceneCount();
 const char* sceneName(int i);  // nullptr when out of range
@@ -127,6 +133,7 @@ struct SynthTruth {
   float centreMm[3] = {0, 0, 0};  // target centre, camera coordinates [mm]
   float radiusMm = 0.f;           // cylinder radius / box half-width [mm]
   float heightMm = 0.f;
+  float yawRad = 0.f;  // box yaw at this frame [rad]
   Box projectedBox{};  // bounding box of the whole target's projection, clipped to the image [px]
   int visiblePixels = 0;    // target pixels not hidden by nearer objects
   int projectedPixels = 0;  // target pixels with nothing in front
@@ -156,6 +163,8 @@ class SyntheticSource final : public FrameSource {
   struct Posed {
     int index;
     float c[3];
+    bool yawed;            // a box with a non-zero yaw at this frame
+    float cosYaw, sinYaw;  // its rotation (local -> camera: x = c lx - s lz, z = s lx + c lz)
   };
 
   void renderBackground(FrameSlot& out, uint32_t frameSeed);
