@@ -53,14 +53,30 @@ class StrongClassifier {
           break;
       }
     }
-    for (int i = 0; i < n; ++i) out[i] = 0.f;
-    for (int m = 0; m < _m; ++m) {
-      const WeakClassifier& w = _weak[m];
-      const uint16_t* cells = _cells[_distinctOf[m]];
-      for (int i = 0; i < n; ++i) out[i] += w.predictCell(cells[i]);
-    }
+    // Four windows at a time, each summing its weak classifiers in round order (the
+    // same additions as one pass per round, without storing partial sums).
     const float inv = _m > 0 ? 1.f / static_cast<float>(_m) : 0.f;
-    for (int i = 0; i < n; ++i) out[i] = valid[i] ? out[i] * inv : -1.f;
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+      float s0 = 0.f, s1 = 0.f, s2 = 0.f, s3 = 0.f;
+      for (int m = 0; m < _m; ++m) {
+        const WeakClassifier& w = _weak[m];
+        const uint16_t* cells = _cells[_distinctOf[m]] + i;
+        s0 += w.predictCell(cells[0]);
+        s1 += w.predictCell(cells[1]);
+        s2 += w.predictCell(cells[2]);
+        s3 += w.predictCell(cells[3]);
+      }
+      out[i] = valid[i] ? s0 * inv : -1.f;
+      out[i + 1] = valid[i + 1] ? s1 * inv : -1.f;
+      out[i + 2] = valid[i + 2] ? s2 * inv : -1.f;
+      out[i + 3] = valid[i + 3] ? s3 * inv : -1.f;
+    }
+    for (; i < n; ++i) {
+      float s = 0.f;
+      for (int m = 0; m < _m; ++m) s += _weak[m].predictCell(_cells[_distinctOf[m]][i]);
+      out[i] = valid[i] ? s * inv : -1.f;
+    }
   }
   int size() const { return _m; }
   const Feature& feature(int i) const { return _feature[i]; }
