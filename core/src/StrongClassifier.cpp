@@ -2,7 +2,156 @@
 
 #include <cstring>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace cuetrack {
+
+#if defined(__SSE2__)
+namespace {
+
+inline __m128i maxEpi32(__m128i a, __m128i b) {
+  const __m128i gt = _mm_cmpgt_epi32(a, b);
+  return _mm_or_si128(_mm_and_si128(gt, a), _mm_andnot_si128(gt, b));
+}
+inline __m128i minEpi32(__m128i a, __m128i b) {
+  const __m128i gt = _mm_cmpgt_epi32(a, b);
+  return _mm_or_si128(_mm_and_si128(gt, b), _mm_andnot_si128(gt, a));
+}
+inline __m128i selectEpi32(__m128i mask, __m128i a, __m128i b) {
+  return _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b));
+}
+inline __m128 selectPs(__m128 mask, __m128 a, __m128 b) {
+  return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+}
+
+}  // namespace
+
+int StrongClassifier::codeCellsFrame4(FeatureKind kind, const Feature& f, const FrameTables& t,
+                                      const Box* wins, const uint8_t* valid, int n, uint16_t* cells,
+                                      const uint16_t* order) {
+  const __m128 fx = _mm_set1_ps(f.x), fy = _mm_set1_ps(f.y), fw = _mm_set1_ps(f.w),
+               fh = _mm_set1_ps(f.h);
+  const __m128 ox = _mm_set1_ps(static_cast<float>(t.originX));
+  const __m128 oy = _mm_set1_ps(static_cast<float>(t.originY));
+  const __m128 half = _mm_set1_ps(4096.5f);
+  const __m128i k4096 = _mm_set1_epi32(4096), two = _mm_set1_epi32(2), one = _mm_set1_epi32(1);
+  const __m128i zero = _mm_setzero_si128(), notOne = _mm_set1_epi32(~1);
+  const __m128i width = _mm_set1_epi32(t.width), height = _mm_set1_epi32(t.height);
+  const __m128 zeroPs = _mm_setzero_ps();
+  const __m128 signMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+  const float minMag = binning(kind).minMag;
+  const __m128i magBase = _mm_set1_epi32(static_cast<int>(fmath::floatBits(minMag * minMag) >> 22));
+  const __m128i magMax = _mm_set1_epi32(kLutMags - 1);
+  const bool gray = kind == FeatureKind::Gray;
+  const int stride = t.stride;
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    int idx[4];
+    for (int j = 0; j < 4; ++j) idx[j] = order != nullptr ? order[k + j] : k + j;
+    const Box &w0 = wins[idx[0]], &w1 = wins[idx[1]], &w2 = wins[idx[2]], &w3 = wins[idx[3]];
+    const __m128 wx = _mm_setr_ps(w0.x, w1.x, w2.x, w3.x);
+    const __m128 wy = _mm_setr_ps(w0.y, w1.y, w2.y, w3.y);
+    const __m128 ww = _mm_setr_ps(w0.w, w1.w, w2.w, w3.w);
+    const __m128 wh = _mm_setr_ps(w0.h, w1.h, w2.h, w3.h);
+    // featureRect
+    const __m128 fx0 = _mm_sub_ps(_mm_add_ps(wx, _mm_mul_ps(fx, ww)), ox);
+    const __m128 fy0 = _mm_sub_ps(_mm_add_ps(wy, _mm_mul_ps(fy, wh)), oy);
+    __m128i a = _mm_sub_epi32(_mm_cvttps_epi32(_mm_add_ps(fx0, half)), k4096);
+    __m128i b = _mm_sub_epi32(
+        _mm_cvttps_epi32(_mm_add_ps(_mm_add_ps(fx0, _mm_mul_ps(fw, ww)), half)), k4096);
+    __m128i c = _mm_sub_epi32(_mm_cvttps_epi32(_mm_add_ps(fy0, half)), k4096);
+    __m128i d = _mm_sub_epi32(
+        _mm_cvttps_epi32(_mm_add_ps(_mm_add_ps(fy0, _mm_mul_ps(fh, wh)), half)), k4096);
+    b = maxEpi32(b, _mm_add_epi32(a, two));
+    d = maxEpi32(d, _mm_add_epi32(c, two));
+    a = maxEpi32(a, zero);
+    c = maxEpi32(c, zero);
+    b = minEpi32(b, width);
+    d = minEpi32(d, height);
+    const __m128i bw = _mm_sub_epi32(b, a), dh = _mm_sub_epi32(d, c);
+    const __m128i ok = _mm_and_si128(_mm_cmpgt_epi32(bw, one), _mm_cmpgt_epi32(dh, one));
+    const __m128i ew = _mm_and_si128(bw, notOne), eh = _mm_and_si128(dh, notOne);
+    const __m128i x1 = _mm_add_epi32(a, ew), y1 = _mm_add_epi32(c, eh);
+    // (x1 - x0) * (y1 - y0) < 2^24: the float product is exact, as the int one.
+    const __m128 area = _mm_mul_ps(_mm_cvtepi32_ps(ew), _mm_cvtepi32_ps(eh));
+    const __m128 invArea = _mm_div_ps(_mm_set1_ps(1.f), area);
+    alignas(16) int xs0[4], xs2[4], ys0[4], ys2[4], okv[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(xs0), a);
+    _mm_store_si128(reinterpret_cast<__m128i*>(xs2), x1);
+    _mm_store_si128(reinterpret_cast<__m128i*>(ys0), c);
+    _mm_store_si128(reinterpret_cast<__m128i*>(ys2), y1);
+    _mm_store_si128(reinterpret_cast<__m128i*>(okv), ok);
+    alignas(16) float v0[4], v1[4], v2[4], v3[4];
+    for (int j = 0; j < 4; ++j) {
+      if (!okv[j] || !valid[idx[j]]) {
+        v0[j] = v1[j] = v2[j] = v3[j] = 0.f;
+        continue;
+      }
+      if (gray) {
+        const int xs[3] = {xs0[j], (xs0[j] + xs2[j]) >> 1, xs2[j]};
+        const int ys[3] = {ys0[j], (ys0[j] + ys2[j]) >> 1, ys2[j]};
+        float q[4];
+        detail::quadrants(t.gray, stride, xs, ys, q);
+        v0[j] = q[0];
+        v1[j] = q[1];
+        v2[j] = q[2];
+        v3[j] = q[3];
+      } else {
+        v0[j] = detail::rect(t.alpha2, stride, xs0[j], ys0[j], xs2[j], ys2[j]);
+        v1[j] = detail::rect(t.beta, stride, xs0[j], ys0[j], xs2[j], ys2[j]);
+      }
+    }
+    __m128 gx, gy;
+    if (gray) {
+      const __m128 q0 = _mm_load_ps(v0), q1 = _mm_load_ps(v1), q2 = _mm_load_ps(v2),
+                   q3 = _mm_load_ps(v3);
+      const __m128 kk = _mm_mul_ps(_mm_set1_ps(2.f), invArea);
+      gx = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(q1, q3), _mm_add_ps(q0, q2)), kk);
+      gy = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(q2, q3), _mm_add_ps(q0, q1)), kk);
+    } else {
+      gx = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), _mm_load_ps(v0)), invArea);
+      gy = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.866025404f), _mm_load_ps(v1)), invArea);
+    }
+    // angleIndex
+    const __m128 ax = _mm_and_ps(gx, signMask), ay = _mm_and_ps(gy, signMask);
+    const __m128 steep = _mm_cmpgt_ps(ay, ax);
+    const __m128 mx = selectPs(steep, ay, ax), mn = selectPs(steep, ax, ay);
+    const __m128 pos = _mm_cmpgt_ps(mx, zeroPs);
+    const __m128i r = _mm_and_si128(
+        _mm_castps_si128(pos), _mm_cvttps_epi32(_mm_div_ps(_mm_mul_ps(mn, _mm_set1_ps(64.f)),
+                                                           selectPs(pos, mx, _mm_set1_ps(1.f)))));
+    alignas(16) int rv[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(rv), r);
+    const __m128i s = _mm_setr_epi32(kAngleSectors.sub[rv[0]], kAngleSectors.sub[rv[1]],
+                                     kAngleSectors.sub[rv[2]], kAngleSectors.sub[rv[3]]);
+    const __m128i iq = selectEpi32(_mm_castps_si128(steep), _mm_sub_epi32(_mm_set1_epi32(7), s), s);
+    const __m128i yPos = _mm_castps_si128(_mm_cmpge_ps(gy, zeroPs));
+    const __m128i xPos = _mm_castps_si128(_mm_cmpge_ps(gx, zeroPs));
+    const __m128i xNeg = _mm_castps_si128(_mm_cmplt_ps(gx, zeroPs));
+    const __m128i upper = selectEpi32(xPos, iq, _mm_sub_epi32(_mm_set1_epi32(15), iq));
+    const __m128i lower = selectEpi32(xNeg, _mm_add_epi32(_mm_set1_epi32(16), iq),
+                                      _mm_sub_epi32(_mm_set1_epi32(31), iq));
+    const __m128i angle = selectEpi32(yPos, upper, lower);
+    // magIndexSq
+    const __m128 mag2 = _mm_add_ps(_mm_mul_ps(gx, gx), _mm_mul_ps(gy, gy));
+    __m128i mi = _mm_sub_epi32(_mm_srli_epi32(_mm_castps_si128(mag2), 22), magBase);
+    mi = minEpi32(maxEpi32(mi, zero), magMax);
+    const __m128i cell = _mm_add_epi32(_mm_mullo_epi16(angle, _mm_set1_epi32(kLutMags)), mi);
+    alignas(16) int cv[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(cv), cell);
+    for (int j = 0; j < 4; ++j)
+      cells[idx[j]] = static_cast<uint16_t>(okv[j] && valid[idx[j]] ? cv[j] : kLutCells);
+  }
+  return k;
+}
+#else
+int StrongClassifier::codeCellsFrame4(FeatureKind, const Feature&, const FrameTables&, const Box*,
+                                      const uint8_t*, int, uint16_t*, const uint16_t*) {
+  return 0;
+}
+#endif
 
 void StrongClassifier::findDistinct() {
   _numDistinct = 0;
