@@ -50,11 +50,10 @@ int StrongClassifier::codeCellsFrame4(FeatureKind kind, const Feature& f, const 
   for (; k + 4 <= n; k += 4) {
     int idx[4];
     for (int j = 0; j < 4; ++j) idx[j] = order != nullptr ? order[k + j] : k + j;
-    const Box &w0 = wins[idx[0]], &w1 = wins[idx[1]], &w2 = wins[idx[2]], &w3 = wins[idx[3]];
-    const __m128 wx = _mm_setr_ps(w0.x, w1.x, w2.x, w3.x);
-    const __m128 wy = _mm_setr_ps(w0.y, w1.y, w2.y, w3.y);
-    const __m128 ww = _mm_setr_ps(w0.w, w1.w, w2.w, w3.w);
-    const __m128 wh = _mm_setr_ps(w0.h, w1.h, w2.h, w3.h);
+    static_assert(sizeof(Box) == 4 * sizeof(float), "Box is x, y, w, h");
+    __m128 wx = _mm_loadu_ps(&wins[idx[0]].x), wy = _mm_loadu_ps(&wins[idx[1]].x),
+           ww = _mm_loadu_ps(&wins[idx[2]].x), wh = _mm_loadu_ps(&wins[idx[3]].x);
+    _MM_TRANSPOSE4_PS(wx, wy, ww, wh);
     // featureRect
     const __m128 fx0 = _mm_sub_ps(_mm_add_ps(wx, _mm_mul_ps(fx, ww)), ox);
     const __m128 fy0 = _mm_sub_ps(_mm_add_ps(wy, _mm_mul_ps(fy, wh)), oy);
@@ -77,42 +76,61 @@ int StrongClassifier::codeCellsFrame4(FeatureKind kind, const Feature& f, const 
     // (x1 - x0) * (y1 - y0) < 2^24: the float product is exact, as the int one.
     const __m128 area = _mm_mul_ps(_mm_cvtepi32_ps(ew), _mm_cvtepi32_ps(eh));
     const __m128 invArea = _mm_div_ps(_mm_set1_ps(1.f), area);
-    alignas(16) int xs0[4], xs2[4], ys0[4], ys2[4], okv[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(xs0), a);
-    _mm_store_si128(reinterpret_cast<__m128i*>(xs2), x1);
-    _mm_store_si128(reinterpret_cast<__m128i*>(ys0), c);
-    _mm_store_si128(reinterpret_cast<__m128i*>(ys2), y1);
-    _mm_store_si128(reinterpret_cast<__m128i*>(okv), ok);
-    alignas(16) float v0[4], v1[4], v2[4], v3[4];
-    for (int j = 0; j < 4; ++j) {
-      if (!okv[j] || !valid[idx[j]]) {
-        v0[j] = v1[j] = v2[j] = v3[j] = 0.f;
-        continue;
-      }
-      if (gray) {
-        const int xs[3] = {xs0[j], (xs0[j] + xs2[j]) >> 1, xs2[j]};
-        const int ys[3] = {ys0[j], (ys0[j] + ys2[j]) >> 1, ys2[j]};
-        float q[4];
-        detail::quadrants(t.gray, stride, xs, ys, q);
-        v0[j] = q[0];
-        v1[j] = q[1];
-        v2[j] = q[2];
-        v3[j] = q[3];
-      } else {
-        v0[j] = detail::rect(t.alpha2, stride, xs0[j], ys0[j], xs2[j], ys2[j]);
-        v1[j] = detail::rect(t.beta, stride, xs0[j], ys0[j], xs2[j], ys2[j]);
-      }
-    }
+    // Lanes with no rectangle or an invalid window read cell 0 (their cell is kLutCells).
+    const __m128i validMask = _mm_cmpgt_epi32(
+        _mm_setr_epi32(valid[idx[0]], valid[idx[1]], valid[idx[2]], valid[idx[3]]), zero);
+    const __m128i use = _mm_and_si128(ok, validMask);
+    // Row offsets y * stride (< 2^24: exact in float).
+    const __m128 strideF = _mm_set1_ps(static_cast<float>(stride));
+    const auto rowOff = [&](__m128i y) {
+      return _mm_cvttps_epi32(_mm_mul_ps(_mm_cvtepi32_ps(y), strideF));
+    };
+    alignas(16) int okv[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(okv), use);
     __m128 gx, gy;
     if (gray) {
-      const __m128 q0 = _mm_load_ps(v0), q1 = _mm_load_ps(v1), q2 = _mm_load_ps(v2),
-                   q3 = _mm_load_ps(v3);
+      const __m128i xm = _mm_srai_epi32(_mm_add_epi32(a, x1), 1);
+      const __m128i ym = _mm_srai_epi32(_mm_add_epi32(c, y1), 1);
+      const __m128i r0 = rowOff(c), r1 = rowOff(ym), r2 = rowOff(y1);
+      alignas(16) int o[9][4];
+      const __m128i xcol[3] = {a, xm, x1};
+      const __m128i rrow[3] = {r0, r1, r2};
+      for (int yy = 0; yy < 3; ++yy)
+        for (int xx = 0; xx < 3; ++xx)
+          _mm_store_si128(reinterpret_cast<__m128i*>(o[yy * 3 + xx]),
+                          _mm_and_si128(use, _mm_add_epi32(rrow[yy], xcol[xx])));
+      const uint32_t* g = t.gray;
+      __m128i cc[9];
+      for (int e = 0; e < 9; ++e)
+        cc[e] = _mm_setr_epi32(static_cast<int>(g[o[e][0]]), static_cast<int>(g[o[e][1]]),
+                               static_cast<int>(g[o[e][2]]), static_cast<int>(g[o[e][3]]));
+      // Quadrant sums (true sums < 2^31: the int32 conversion is the uint32 one).
+      const auto quad = [](__m128i p, __m128i q, __m128i r, __m128i u) {
+        return _mm_cvtepi32_ps(_mm_add_epi32(_mm_sub_epi32(_mm_sub_epi32(p, q), r), u));
+      };
+      const __m128 q0 = quad(cc[4], cc[3], cc[1], cc[0]);
+      const __m128 q1 = quad(cc[5], cc[4], cc[2], cc[1]);
+      const __m128 q2 = quad(cc[7], cc[6], cc[4], cc[3]);
+      const __m128 q3 = quad(cc[8], cc[7], cc[5], cc[4]);
       const __m128 kk = _mm_mul_ps(_mm_set1_ps(2.f), invArea);
       gx = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(q1, q3), _mm_add_ps(q0, q2)), kk);
       gy = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(q2, q3), _mm_add_ps(q0, q1)), kk);
     } else {
-      gx = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), _mm_load_ps(v0)), invArea);
-      gy = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.866025404f), _mm_load_ps(v1)), invArea);
+      const __m128i r0 = rowOff(c), r1 = rowOff(y1);
+      alignas(16) int o[4][4];
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[0]), _mm_and_si128(use, _mm_add_epi32(r0, a)));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[1]), _mm_and_si128(use, _mm_add_epi32(r0, x1)));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[2]), _mm_and_si128(use, _mm_add_epi32(r1, a)));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[3]), _mm_and_si128(use, _mm_add_epi32(r1, x1)));
+      const auto rectOf = [&](const int32_t* tb) {
+        __m128i v[4];
+        for (int e = 0; e < 4; ++e)
+          v[e] = _mm_setr_epi32(tb[o[e][0]], tb[o[e][1]], tb[o[e][2]], tb[o[e][3]]);
+        // at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0)
+        return _mm_cvtepi32_ps(_mm_add_epi32(_mm_sub_epi32(_mm_sub_epi32(v[3], v[2]), v[1]), v[0]));
+      };
+      gx = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), rectOf(t.alpha2)), invArea);
+      gy = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.866025404f), rectOf(t.beta)), invArea);
     }
     // angleIndex
     const __m128 ax = _mm_and_ps(gx, signMask), ay = _mm_and_ps(gy, signMask);
@@ -141,8 +159,7 @@ int StrongClassifier::codeCellsFrame4(FeatureKind kind, const Feature& f, const 
     const __m128i cell = _mm_add_epi32(_mm_mullo_epi16(angle, _mm_set1_epi32(kLutMags)), mi);
     alignas(16) int cv[4];
     _mm_store_si128(reinterpret_cast<__m128i*>(cv), cell);
-    for (int j = 0; j < 4; ++j)
-      cells[idx[j]] = static_cast<uint16_t>(okv[j] && valid[idx[j]] ? cv[j] : kLutCells);
+    for (int j = 0; j < 4; ++j) cells[idx[j]] = static_cast<uint16_t>(okv[j] ? cv[j] : kLutCells);
   }
   return k;
 }
