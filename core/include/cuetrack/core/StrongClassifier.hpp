@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "cuetrack/core/Config.hpp"
 #include "cuetrack/core/FeaturePool.hpp"
@@ -53,14 +54,30 @@ class StrongClassifier {
           break;
       }
     }
-    for (int i = 0; i < n; ++i) out[i] = 0.f;
-    for (int m = 0; m < _m; ++m) {
-      const WeakClassifier& w = _weak[m];
-      const uint16_t* cells = _cells[_distinctOf[m]];
-      for (int i = 0; i < n; ++i) out[i] += w.predictCell(cells[i]);
-    }
+    // Four windows at a time, each summing its weak classifiers in round order (the
+    // same additions as one pass per round, without storing partial sums).
     const float inv = _m > 0 ? 1.f / static_cast<float>(_m) : 0.f;
-    for (int i = 0; i < n; ++i) out[i] = valid[i] ? out[i] * inv : -1.f;
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+      float s0 = 0.f, s1 = 0.f, s2 = 0.f, s3 = 0.f;
+      for (int m = 0; m < _m; ++m) {
+        const WeakClassifier& w = _weak[m];
+        const uint16_t* cells = _cells[_distinctOf[m]] + i;
+        s0 += w.predictCell(cells[0]);
+        s1 += w.predictCell(cells[1]);
+        s2 += w.predictCell(cells[2]);
+        s3 += w.predictCell(cells[3]);
+      }
+      out[i] = valid[i] ? s0 * inv : -1.f;
+      out[i + 1] = valid[i + 1] ? s1 * inv : -1.f;
+      out[i + 2] = valid[i + 2] ? s2 * inv : -1.f;
+      out[i + 3] = valid[i + 3] ? s3 * inv : -1.f;
+    }
+    for (; i < n; ++i) {
+      float s = 0.f;
+      for (int m = 0; m < _m; ++m) s += _weak[m].predictCell(_cells[_distinctOf[m]][i]);
+      out[i] = valid[i] ? s * inv : -1.f;
+    }
   }
   int size() const { return _m; }
   const Feature& feature(int i) const { return _feature[i]; }
@@ -73,12 +90,22 @@ class StrongClassifier {
   template <FeatureKind K, typename U, typename S>
   static void codeCells(const Feature& f, const ChannelTables<U, S>& t, const Box* wins,
                         const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order) {
-    for (int k = 0; k < n; ++k) {
+    int k = 0;
+    if constexpr (K != FeatureKind::Depth && std::is_same_v<U, uint32_t> &&
+                  std::is_same_v<S, int32_t>)
+      k = codeCellsFrame4(K, f, t, wins, valid, n, cells, order);
+    for (; k < n; ++k) {
       const int i = order != nullptr ? order[k] : k;
       cells[i] = static_cast<uint16_t>(
           valid[i] ? WeakClassifier::cellOf(evaluateKind<K>(f, wins[i], t), K) : kLutCells);
     }
   }
+  // codeCells of a Gray or Colour feature on frame tables, four windows at a time with
+  // SSE2 (each lane the scalar path's IEEE operations). Returns how many of the n
+  // windows (in visiting order) it coded: a multiple of 4, 0 without SSE2.
+  static int codeCellsFrame4(FeatureKind kind, const Feature& f, const FrameTables& t,
+                             const Box* wins, const uint8_t* valid, int n, uint16_t* cells,
+                             const uint16_t* order);
   void findDistinct();
 
   Feature _feature[kMaxWeakClassifiers];
