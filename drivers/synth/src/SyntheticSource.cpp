@@ -104,6 +104,21 @@ inline Rgb8 shade(Rgb8 c, float nx, float ny, float nz) {
   return {clampByte(c.r * k), clampByte(c.g * k), clampByte(c.b * k)};
 }
 
+// Ray-slab clipping: the ray is inside the slab for t in [a, b] (either order); narrows
+// [tn, tf] to it and remembers which slab the ray enters last (the face it hits).
+inline void clipSlab(float a, float b, int slabFace, float* tn, float* tf, int* face) {
+  if (a > b) {
+    const float tmp = a;
+    a = b;
+    b = tmp;
+  }
+  if (a > *tn) {
+    *tn = a;
+    *face = slabFace;
+  }
+  if (b < *tf) *tf = b;
+}
+
 constexpr const char* kSceneNames[] = {"moving",   "twin-crossing", "occlusion", "untextured",
                                        "lighting", "approach",      "box",       "turn"};
 constexpr int kNumScenes = static_cast<int>(sizeof(kSceneNames) / sizeof(kSceneNames[0]));
@@ -534,32 +549,12 @@ void SyntheticSource::renderObject(const Posed& p, FrameSlot& out, bool isTarget
         int face = 2;
         auto slab = [&](float o0, float d, float half, int f) {
           if (d == 0.f) return o0 >= -half && o0 <= half;
-          float a = (-half - o0) / d, b = (half - o0) / d;
-          if (a > b) {
-            const float tmp = a;
-            a = b;
-            b = tmp;
-          }
-          if (a > tn) {
-            tn = a;
-            face = f;
-          }
-          if (b < tf) tf = b;
+          clipSlab((-half - o0) / d, (half - o0) / d, f, &tn, &tf, &face);
           return true;
         };
         if (!slab(oz, lz, D, 2) || !slab(ox, lx, R, 0)) continue;
         if (dy != 0.f) {
-          float a = yTop / dy, b = yBot / dy;
-          if (a > b) {
-            const float tmp = a;
-            a = b;
-            b = tmp;
-          }
-          if (a > tn) {
-            tn = a;
-            face = 1;
-          }
-          if (b < tf) tf = b;
+          clipSlab(yTop / dy, yBot / dy, 1, &tn, &tf, &face);
         } else if (yTop > 0.f || yBot < 0.f) {
           continue;
         }
@@ -587,32 +582,12 @@ void SyntheticSource::renderObject(const Posed& p, FrameSlot& out, bool isTarget
         float tn = Z - D, tf = Z + D;
         int face = 2;
         if (dx != 0.f) {
-          float a = (X - R) / dx, b = (X + R) / dx;
-          if (a > b) {
-            const float tmp = a;
-            a = b;
-            b = tmp;
-          }
-          if (a > tn) {
-            tn = a;
-            face = 0;
-          }
-          if (b < tf) tf = b;
+          clipSlab((X - R) / dx, (X + R) / dx, 0, &tn, &tf, &face);
         } else if (X - R > 0.f || X + R < 0.f) {
           continue;
         }
         if (dy != 0.f) {
-          float a = yTop / dy, b = yBot / dy;
-          if (a > b) {
-            const float tmp = a;
-            a = b;
-            b = tmp;
-          }
-          if (a > tn) {
-            tn = a;
-            face = 1;
-          }
-          if (b < tf) tf = b;
+          clipSlab(yTop / dy, yBot / dy, 1, &tn, &tf, &face);
         } else if (yTop > 0.f || yBot < 0.f) {
           continue;
         }

@@ -35,7 +35,7 @@ class LostDetector {
   int foundAfter = 2;
   int probationFrames = 8;
   float foundMargin = 0.15f;
-  float typicalRate = 0.1f;  // weight of a new frame in the running mean
+  float typicalRate = 0.1f;  // weight of the latest frame in the running mean
 
   void reset() {
     _low = _high = _probation = 0;
