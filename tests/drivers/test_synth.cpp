@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -111,6 +112,24 @@ TEST_CASE("same seed gives the same bytes, another seed other noise", "[synth]")
   CHECK(sameFrame(*fa, *fb));
 }
 
+// Inclusive pixel bounds {x0, y0, x1, y1} of where a 640x480 frame differs from the
+// background-only render (colour, and depth too when asked); x1 = -1 when nowhere.
+static std::array<int, 4> changedPixels(const FrameSlot& a, const FrameSlot& bg, bool depthToo) {
+  std::array<int, 4> r{1 << 20, 1 << 20, -1, -1};
+  for (int y = 0; y < 480; ++y)
+    for (int x = 0; x < 640; ++x) {
+      const int i = y * 640 + x;
+      if ((depthToo && a.depthMm.data()[i] != bg.depthMm.data()[i]) ||
+          std::memcmp(&a.rgb.data()[i], &bg.rgb.data()[i], 3) != 0) {
+        r[0] = std::min(r[0], x);
+        r[1] = std::min(r[1], y);
+        r[2] = std::max(r[2], x);
+        r[3] = std::max(r[3], y);
+      }
+    }
+  return r;
+}
+
 TEST_CASE("ground truth box matches the rendered target pixels", "[synth]") {
   SceneSpec spec = scene("moving", 30);
   spec.colourNoise = 0;
@@ -125,16 +144,7 @@ TEST_CASE("ground truth box matches the rendered target pixels", "[synth]") {
   for (int f = 0; f < 30; f += 7) {
     REQUIRE(src->render(f, *slot));
     REQUIRE(bg->render(f, *bgSlot));
-    int x0 = 1 << 20, y0 = 1 << 20, x1 = -1, y1 = -1;
-    for (int y = 0; y < 480; ++y)
-      for (int x = 0; x < 640; ++x)
-        if (slot->depthMm.data()[y * 640 + x] != bgSlot->depthMm.data()[y * 640 + x] ||
-            std::memcmp(&slot->rgb.data()[y * 640 + x], &bgSlot->rgb.data()[y * 640 + x], 3)) {
-          x0 = std::min(x0, x);
-          y0 = std::min(y0, y);
-          x1 = std::max(x1, x);
-          y1 = std::max(y1, y);
-        }
+    const auto [x0, y0, x1, y1] = changedPixels(*slot, *bgSlot, true);
     const Box gt = slot->groundTruth;
     INFO("frame " << f << " gt " << gt.x << "," << gt.y << " " << gt.w << "x" << gt.h << " px "
                   << x0 << "," << y0 << ".." << x1 << "," << y1);
@@ -223,15 +233,7 @@ TEST_CASE("turn scene: the box yaws 90 degrees, its width shrinks ~3x, truth fol
   for (int f : {0, 40, 75, 110, 149}) {
     REQUIRE(src->render(f, *slot));
     REQUIRE(bg->render(f, *bgSlot));
-    int x0 = 1 << 20, y0 = 1 << 20, x1 = -1, y1 = -1;
-    for (int y = 0; y < 480; ++y)
-      for (int x = 0; x < 640; ++x)
-        if (std::memcmp(&slot->rgb.data()[y * 640 + x], &bgSlot->rgb.data()[y * 640 + x], 3)) {
-          x0 = std::min(x0, x);
-          y0 = std::min(y0, y);
-          x1 = std::max(x1, x);
-          y1 = std::max(y1, y);
-        }
+    const auto [x0, y0, x1, y1] = changedPixels(*slot, *bgSlot, false);
     const Box gt = slot->groundTruth;
     INFO("frame " << f << " gt " << gt.x << "," << gt.y << " " << gt.w << "x" << gt.h << " px "
                   << x0 << "," << y0 << ".." << x1 << "," << y1);
