@@ -1,5 +1,7 @@
 #include "cuetrack/core/Tracker.hpp"
 
+#include "cuetrack/core/SizeMeasure.hpp"
+
 namespace cuetrack {
 
 namespace {
@@ -17,6 +19,13 @@ constexpr float kSearchGrowth = 0.25f;
 constexpr float kDepthJumpRatio = 0.75f;  // 3D: estimate depth / last learnt depth (or inverse)
 constexpr float kSearchInside = 0.8f;     // while lost, windows must lie this much inside
 constexpr float kDefaultDtS = 1.f / 30.f;
+// adaptCylinderSize: the silhouette is the depth within surface +- (D/2 + m) (a face
+// seen obliquely reaches in front of the centre's depth as well as behind it), with
+// m = this x the surface depth (Kinect depth noise grows with depth); per frame D and
+// H move at most kMaxSizeStep (ln), the centre kMaxCentreStep x the window's side.
+constexpr float kSlabMargin = 0.05f;
+constexpr float kMaxSizeStep = 0.03f;
+constexpr float kMaxCentreStep = 0.03f;
 
 float frameDtS(uint64_t last, uint64_t now) {
   if (now <= last) return kDefaultDtS;
@@ -33,6 +42,22 @@ PixelRect unite(const PixelRect& a, const PixelRect& b) {
   r.x1 = a.x1 > b.x1 ? a.x1 : b.x1;
   r.y1 = a.y1 > b.y1 ? a.y1 : b.y1;
   return r;
+}
+
+// ln step toward `ratio`, `gain` of the way, at most kMaxSizeStep; as a factor.
+float sizeStep(float ratio, float gain) {
+  if (!(ratio > 0.f)) return 1.f;
+  return fmath::fastExp(fmath::clampf(gain * fmath::fastLog(ratio), -kMaxSizeStep, kMaxSizeStep));
+}
+
+// Scales D and H, moving the centre along its ray so the front surface stays put (the
+// depth correction would otherwise read the move as a velocity).
+void rescaleCylinder(Particle& q, float fD, float fH) {
+  const float zc = q.p[2] + 0.5f * q.size[0] * (fD - 1.f);
+  const float s = zc / q.p[2];
+  for (int a = 0; a < 3; ++a) q.p[a] *= s;
+  q.size[0] *= fD;
+  q.size[1] *= fH;
 }
 
 Box grow(const Box& b, float by) {
@@ -336,6 +361,44 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   return InitError::None;
 }
 
+bool Tracker::followTargetSize(const Frame& frame, Particle& est) {
+  const Box b = particleBox(est);
+  if (b.empty()) return false;
+  // The surface depth as the depth correction reads it (inner 10% of the window).
+  const float iw = b.w * 0.1f < 2.f ? 2.f : b.w * 0.1f, ih = b.h * 0.1f < 2.f ? 2.f : b.h * 0.1f;
+  const Box inner{b.x + 0.5f * (b.w - iw), b.y + 0.5f * (b.h - ih), iw, ih};
+  const float surfaceMm = _channels.meanDepthMm(clipBox(inner, _imageW, _imageH));
+  if (!(surfaceMm > 0.f)) return false;
+  const float halfSlabMm = 0.5f * est.size[0] + kSlabMargin * surfaceMm;
+  const SilhouetteExtent e =
+      measureSilhouette(frame.depthMm, b, surfaceMm - halfSlabMm, surfaceMm + halfSlabMm);
+  const float gain = _config.cylinderSizeGain, centreGain = _config.cylinderCentreGain;
+  float fD = 1.f, fH = 1.f, du = 0.f, dv = 0.f;  // size factors, centre shifts [px]
+  if (e.hasWidth && e.widthPx < _k.fx) {
+    fD = sizeStep(cylinderDiameterMm(e.widthPx, surfaceMm, _k) / est.size[0], gain);
+    du = fmath::clampf(centreGain * (e.centreXPx - (b.x + 0.5f * b.w)), -kMaxCentreStep * b.w,
+                       kMaxCentreStep * b.w);
+  }
+  if (e.hasHeight) {
+    const float heightMm = cylinderHeightMm(e.heightPx, surfaceMm, est.size[0] * fD, _k);
+    fH = sizeStep(heightMm / est.size[1], gain);
+    dv = fmath::clampf(centreGain * (e.centreYPx - (b.y + 0.5f * b.h)), -kMaxCentreStep * b.h,
+                       kMaxCentreStep * b.h);
+  }
+  if (fD == 1.f && fH == 1.f && du == 0.f && dv == 0.f) return false;
+  // The same change for every particle (its spread stays), velocities untouched: a
+  // shift of du px is du z / fx mm at depth z.
+  const float xPerZ = du / _k.fx, yPerZ = dv / _k.fy;
+  const int n = _filter.size();
+  for (int i = -1; i < n; ++i) {
+    Particle& q = i < 0 ? est : _filter[i];
+    rescaleCylinder(q, fD, fH);
+    q.p[0] += xPerZ * q.p[2];
+    q.p[1] += yPerZ * q.p[2];
+  }
+  return true;
+}
+
 void Tracker::learn(const Box& estimate, const PixelRect& roi) {
   addExample(estimate, true);
   addNegatives(estimate, _config.negativesPerUpdate, roi);
@@ -491,6 +554,10 @@ TrackResult Tracker::update(const Frame& frame) {
   bool learned = false;
   if (!estBox.empty() && !occluded && !_lost.onProbation() &&
       _gate.open(confidence, concentration, _state)) {
+    // Only on frames fit to learn: the estimate is then on the target.
+    if (_is3d && _config.adaptCylinderSize && _config.cylinderSizeGain > 0.f && frame.hasDepth() &&
+        followTargetSize(frame, est))
+      estBox = particleBox(est);
     _lastEstimate = est;
     learn(clampToImage(estBox), roi);
     learned = true;

@@ -69,6 +69,9 @@ class Tracker {
   void learn(const Box& estimate, const PixelRect& roi);
   bool medianDepthMm(const Frame& frame, const Box& box, float* out);
   Particle searchParticle(bool wide);
+  // adaptCylinderSize: moves D, H and the centre of est and every particle toward the
+  // silhouette measured in depth; false when nothing was measured.
+  bool followTargetSize(const Frame& frame, Particle& est);
 
   TrackerConfig _config{};
   uint64_t _seed = 0;

@@ -32,7 +32,7 @@ struct TrackerConfig {
   float velocityNoiseMm2PerS2 = 550.f;  // AR(1) velocity noise variance, 3D [mm^2/s^2]
 
   // Beyond the paper (off in the paper's presets, on in `best`)
-  bool adaptCylinderSize = false;  // let H and D follow the target
+  bool adaptCylinderSize = false;  // D, H (and centre) follow the silhouette measured in depth
   bool lostDetection = false;      // declare lost, freeze learning, re-acquire
   bool fallbackTo2d = false;       // 3D/depth requested but the frame has none: run 2D RGB
 
@@ -54,6 +54,9 @@ struct TrackerConfig {
   float scaleNoise2d = 0.015f;       // 2D std of ln(scale) per frame
   float aspectNoise2d = 0.004f;      // 2D std of ln(w/h) per frame
   float cylinderSizeNoise = 0.002f;  // adaptCylinderSize: std of ln D and ln H per frame
+  float cylinderSizeGain = 0.1f;     // ... per learnt frame, ln D, ln H move this part of the
+                                     // way to the silhouette measured in depth (0: walk only)
+  float cylinderCentreGain = 0.2f;   // ... and the window's centre this part to the silhouette's
   float sizeGain = 0.3f;             // 2D: alpha-beta filter on ln w, ln h: alpha
   float sizeRateGain = 0.05f;        // ... beta (the rate: steady zooms are followed without lag)
 };

@@ -1,0 +1,159 @@
+#include "cuetrack/core/SizeMeasure.hpp"
+
+#include <cstdint>
+
+#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/FastMath.hpp"
+
+namespace cuetrack {
+
+namespace {
+constexpr float kWindowGrow = 0.5f;  // window: the box grown by this x its size per side
+constexpr float kBandFrom = 0.25f;   // profile samples from the box's middle half
+constexpr float kBandTo = 0.75f;
+constexpr int kMaxSamples = 16;  // band rows (columns) read per column (row)
+constexpr int kMaxCells = kMaxImageWidth > kMaxImageHeight ? kMaxImageWidth : kMaxImageHeight;
+
+struct Span {
+  int lo = 0, hi = 0;  // [lo, hi)
+};
+
+// [lo, hi) of floor(from)..floor(to) clipped to [0, n).
+Span clipSpan(float from, float to, int n) {
+  Span s{fmath::floorToInt(from), fmath::floorToInt(to)};
+  if (s.lo < 0) s.lo = 0;
+  if (s.hi > n) s.hi = n;
+  if (s.hi < s.lo) s.hi = s.lo;
+  return s;
+}
+
+// Sample i of m spread evenly over the band (cell centres).
+int sampleAt(const Span& band, int i, int m) {
+  return band.lo + ((2 * i + 1) * (band.hi - band.lo)) / (2 * m);
+}
+
+// A cell (column or row) belongs to the target when most of its valid samples, and at
+// least a quarter of all its samples, lie in the slab (holes neither add nor veto).
+bool occupied(int in, int valid, int samples) {
+  return 2 * in > valid && 4 * in >= samples;
+}
+
+// Length of the run of occupied cells through `centre` (or the nearest occupied cell
+// within `search`), bridging up to maxGap free cells; 0 when there is none or the run
+// reaches either end of [0, n) (it may go on beyond the window).
+int centralRun(const uint8_t* occ, int n, int centre, int search, int maxGap, int* firstOut) {
+  int start = -1;
+  for (int d = 0; d <= search && start < 0; ++d) {
+    if (centre - d >= 0 && occ[centre - d] != 0)
+      start = centre - d;
+    else if (centre + d < n && occ[centre + d] != 0)
+      start = centre + d;
+  }
+  if (start < 0) return 0;
+  int last = start, gap = 0, i = start + 1;
+  for (; i < n; ++i) {
+    if (occ[i] != 0) {
+      last = i;
+      gap = 0;
+    } else if (++gap > maxGap) {
+      break;
+    }
+  }
+  if (i == n) return 0;
+  int first = start;
+  gap = 0;
+  for (i = start - 1; i >= 0; --i) {
+    if (occ[i] != 0) {
+      first = i;
+      gap = 0;
+    } else if (++gap > maxGap) {
+      break;
+    }
+  }
+  if (i < 0) return 0;
+  *firstOut = first;
+  return last - first + 1;
+}
+
+int maxGapFor(float sidePx) {
+  return 2 + fmath::floorToInt(sidePx * (1.f / 32.f));
+}
+}  // namespace
+
+SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float nearMm,
+                                   float farMm) {
+  SilhouetteExtent out;
+  if (depth.empty() || box.empty()) return out;
+  const int nearI = nearMm < 1.f ? 1 : fmath::floorToInt(nearMm) + 1;
+  const float farC =
+      farMm > static_cast<float>(kMaxDepthMm) ? static_cast<float>(kMaxDepthMm) : farMm;
+  const int farI = fmath::floorToInt(farC);
+  if (farI < nearI) return out;
+  const uint16_t lo = static_cast<uint16_t>(nearI), hi = static_cast<uint16_t>(farI);
+  const Span wx =
+      clipSpan(box.x - kWindowGrow * box.w, box.x + (1.f + kWindowGrow) * box.w, depth.width);
+  const Span wy =
+      clipSpan(box.y - kWindowGrow * box.h, box.y + (1.f + kWindowGrow) * box.h, depth.height);
+  const int nx = wx.hi - wx.lo, ny = wy.hi - wy.lo;
+  if (nx < 3 || ny < 3) return out;
+  const int cx = fmath::floorToInt(box.x + 0.5f * box.w) - wx.lo;
+  const int cy = fmath::floorToInt(box.y + 0.5f * box.h) - wy.lo;
+  if (cx < 0 || cx >= nx || cy < 0 || cy >= ny) return out;
+
+  uint8_t in[kMaxCells], valid[kMaxCells], occ[kMaxCells];
+  // Width: columns of the window, sampled on the box's middle rows.
+  const Span by = clipSpan(box.y + kBandFrom * box.h, box.y + kBandTo * box.h, depth.height);
+  if (by.hi > by.lo) {
+    const int m = by.hi - by.lo < kMaxSamples ? by.hi - by.lo : kMaxSamples;
+    for (int i = 0; i < nx; ++i) in[i] = valid[i] = 0;
+    for (int s = 0; s < m; ++s) {
+      const uint16_t* row = depth.row(sampleAt(by, s, m)) + wx.lo;
+      for (int i = 0; i < nx; ++i) {
+        const uint16_t d = row[i];
+        valid[i] = static_cast<uint8_t>(valid[i] + (d != 0 && d <= kMaxDepthMm ? 1 : 0));
+        in[i] = static_cast<uint8_t>(in[i] + (d >= lo && d <= hi ? 1 : 0));
+      }
+    }
+    for (int i = 0; i < nx; ++i) occ[i] = occupied(in[i], valid[i], m) ? 1 : 0;
+    int first = 0;
+    const int run =
+        centralRun(occ, nx, cx, 2 + fmath::floorToInt(0.125f * box.w), maxGapFor(box.w), &first);
+    out.hasWidth = run > 0;
+    out.widthPx = static_cast<float>(run);
+    out.centreXPx = static_cast<float>(wx.lo + first) + 0.5f * static_cast<float>(run);
+  }
+  // Height: rows of the window, sampled on the box's middle columns.
+  const Span bx = clipSpan(box.x + kBandFrom * box.w, box.x + kBandTo * box.w, depth.width);
+  if (bx.hi > bx.lo) {
+    const int m = bx.hi - bx.lo < kMaxSamples ? bx.hi - bx.lo : kMaxSamples;
+    int cols[kMaxSamples];
+    for (int s = 0; s < m; ++s) cols[s] = sampleAt(bx, s, m);
+    for (int j = 0; j < ny; ++j) {
+      const uint16_t* row = depth.row(wy.lo + j);
+      int nIn = 0, nValid = 0;
+      for (int s = 0; s < m; ++s) {
+        const uint16_t d = row[cols[s]];
+        nValid += d != 0 && d <= kMaxDepthMm ? 1 : 0;
+        nIn += d >= lo && d <= hi ? 1 : 0;
+      }
+      occ[j] = occupied(nIn, nValid, m) ? 1 : 0;
+    }
+    int first = 0;
+    const int run =
+        centralRun(occ, ny, cy, 2 + fmath::floorToInt(0.125f * box.h), maxGapFor(box.h), &first);
+    out.hasHeight = run > 0;
+    out.heightPx = static_cast<float>(run);
+    out.centreYPx = static_cast<float>(wy.lo + first) + 0.5f * static_cast<float>(run);
+  }
+  return out;
+}
+
+float cylinderDiameterMm(float wPx, float surfaceMm, const CameraIntrinsics& k) {
+  return wPx * surfaceMm / (k.fx - 0.5f * wPx);
+}
+
+float cylinderHeightMm(float hPx, float surfaceMm, float diameterMm, const CameraIntrinsics& k) {
+  return hPx * (surfaceMm + 0.5f * diameterMm) / k.fy;
+}
+
+}  // namespace cuetrack
