@@ -89,7 +89,7 @@ SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float
       farMm > static_cast<float>(kMaxDepthMm) ? static_cast<float>(kMaxDepthMm) : farMm;
   const int farI = fmath::floorToInt(farC);
   if (farI < nearI) return out;
-  const uint16_t lo = static_cast<uint16_t>(nearI), hi = static_cast<uint16_t>(farI);
+  const uint16_t lo = static_cast<uint16_t>(nearI), span = static_cast<uint16_t>(farI - nearI);
   const Span wx =
       clipSpan(box.x - kWindowGrow * box.w, box.x + (1.f + kWindowGrow) * box.w, depth.width);
   const Span wy =
@@ -108,10 +108,11 @@ SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float
     for (int i = 0; i < nx; ++i) in[i] = valid[i] = 0;
     for (int s = 0; s < m; ++s) {
       const uint16_t* row = depth.row(sampleAt(by, s, m)) + wx.lo;
+      // Unsigned range tests (one compare each; the loop vectorises).
       for (int i = 0; i < nx; ++i) {
-        const uint16_t d = row[i];
-        valid[i] = static_cast<uint8_t>(valid[i] + (d != 0 && d <= kMaxDepthMm ? 1 : 0));
-        in[i] = static_cast<uint8_t>(in[i] + (d >= lo && d <= hi ? 1 : 0));
+        valid[i] =
+            static_cast<uint8_t>(valid[i] + (static_cast<uint16_t>(row[i] - 1u) < kMaxDepthMm));
+        in[i] = static_cast<uint8_t>(in[i] + (static_cast<uint16_t>(row[i] - lo) <= span));
       }
     }
     for (int i = 0; i < nx; ++i) occ[i] = occupied(in[i], valid[i], m) ? 1 : 0;
@@ -133,8 +134,8 @@ SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float
       int nIn = 0, nValid = 0;
       for (int s = 0; s < m; ++s) {
         const uint16_t d = row[cols[s]];
-        nValid += d != 0 && d <= kMaxDepthMm ? 1 : 0;
-        nIn += d >= lo && d <= hi ? 1 : 0;
+        nValid += static_cast<uint16_t>(d - 1u) < kMaxDepthMm;
+        nIn += static_cast<uint16_t>(d - lo) <= span;
       }
       occ[j] = occupied(nIn, nValid, m) ? 1 : 0;
     }
