@@ -1,4 +1,4 @@
-// Chooses the cell coder statically: SSE2 is baseline on x86-64.
+// Chooses the cell coder statically: SSE2 is baseline on x86-64, NEON on aarch64.
 #include "cuetrack/core/CellKernels.hpp"
 
 namespace cuetrack::cellk {
@@ -7,6 +7,11 @@ namespace cuetrack::cellk {
 namespace isa = sse2;
 const char* activeIsa() {
   return "sse2";
+}
+#elif defined(CUETRACK_CELLK_NEON)
+namespace isa = neon;
+const char* activeIsa() {
+  return "neon";
 }
 #else
 namespace isa = scalar;
