@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cuetrack/core/CellKernels.hpp"
+#include "cuetrack/core/Integral.hpp"
 #include "cuetrack/core/WeakClassifier.hpp"
 
 namespace ck = cuetrack::cellk;
@@ -28,6 +29,11 @@ std::vector<Isa> kernelsUnderTest() {
   std::vector<Isa> isas;
 #if defined(CUETRACK_CELLK_SSE2)
   isas.push_back({"sse2", ck::sse2::codeFrame});
+  if (cuetrack::integral::avx2Available()) {
+    isas.push_back({"avx2", ck::avx2::codeFrame});
+  } else {
+    WARN("this CPU has no AVX2: the avx2 cell coder is not tested here");
+  }
 #endif
 #if defined(CUETRACK_CELLK_NEON)
   isas.push_back({"neon", ck::neon::codeFrame});

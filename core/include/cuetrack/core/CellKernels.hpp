@@ -22,7 +22,9 @@ namespace cuetrack::cellk {
 CUETRACK_CELLK_DECLARE_ISA(scalar)
 #if defined(__x86_64__) || defined(__SSE2__)
 #define CUETRACK_CELLK_SSE2 1
+#define CUETRACK_CELLK_AVX2 1
 CUETRACK_CELLK_DECLARE_ISA(sse2)
+CUETRACK_CELLK_DECLARE_ISA(avx2)  // 8 windows at a time; only where the CPU has AVX2
 #endif
 // aarch64 only: ARMv7 NEON flushes subnormals and has no vector division.
 #if defined(__aarch64__) && defined(__ARM_NEON)
@@ -31,7 +33,7 @@ CUETRACK_CELLK_DECLARE_ISA(neon)
 #endif
 #undef CUETRACK_CELLK_DECLARE_ISA
 
-// The implementation this build uses (SSE2 on x86-64, NEON on aarch64, else scalar);
+// The implementation this build uses (AVX2 or SSE2 on x86-64, NEON on aarch64, else scalar);
 // returns how many windows (in visiting order) it coded.
 int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Box* wins,
               const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order);
