@@ -26,7 +26,23 @@ void extractPatch(const FrameTables& t, const Box& win, ExamplePatch* out) {
     xs[i] = x < 0 ? 0 : (x > t.width ? t.width : x);
     ys[i] = y < 0 ? 0 : (y > t.height ? t.height : y);
   }
-  float* ch[5] = {out->gray, out->alpha2, out->beta, out->depth, out->count};
+  // Column spans, the same for every row.
+  int cx0[kPatchSize], cx1[kPatchSize];
+  for (int i = 0; i < kPatchSize; ++i) {
+    int x0 = xs[i], x1 = xs[i + 1];
+    if (x1 <= x0) {
+      if (x0 >= t.width) x0 = t.width - 1;
+      x1 = x0 + 1;
+    }
+    cx0[i] = x0;
+    cx1[i] = x1;
+  }
+  float* const gray = out->gray;
+  float* const alpha2 = out->alpha2;
+  float* const beta = out->beta;
+  float* const depth = out->depth;
+  float* const count = out->count;
+  float* ch[5] = {gray, alpha2, beta, depth, count};
   for (float* c : ch)
     for (int i = 0; i < kPatchStride; ++i) c[i] = 0.f;  // top row
   for (int j = 0; j < kPatchSize; ++j) {
@@ -39,11 +55,7 @@ void extractPatch(const FrameTables& t, const Box& win, ExamplePatch* out) {
     const int base = (j + 1) * kPatchStride, prev = j * kPatchStride;
     for (int c = 0; c < 5; ++c) ch[c][base] = 0.f;
     for (int i = 0; i < kPatchSize; ++i) {
-      int x0 = xs[i], x1 = xs[i + 1];
-      if (x1 <= x0) {
-        if (x0 >= t.width) x0 = t.width - 1;
-        x1 = x0 + 1;
-      }
+      const int x0 = cx0[i], x1 = cx1[i];
       const float inv = 1.f / static_cast<float>((x1 - x0) * (y1 - y0));
       const float v[5] = {
           detail::rect(t.gray, t.stride, x0, y0, x1, y1) * inv,
@@ -52,10 +64,17 @@ void extractPatch(const FrameTables& t, const Box& win, ExamplePatch* out) {
           detail::rect(t.depth, t.stride, x0, y0, x1, y1) * inv,
           detail::rect(t.count, t.stride, x0, y0, x1, y1) * inv,
       };
-      for (int c = 0; c < 5; ++c) {
-        row[c] += v[c];
-        ch[c][base + i + 1] = ch[c][prev + i + 1] + row[c];
-      }
+      // Written out per channel: a loop over ch[] reloads each channel's pointer.
+      row[0] += v[0];
+      row[1] += v[1];
+      row[2] += v[2];
+      row[3] += v[3];
+      row[4] += v[4];
+      gray[base + i + 1] = gray[prev + i + 1] + row[0];
+      alpha2[base + i + 1] = alpha2[prev + i + 1] + row[1];
+      beta[base + i + 1] = beta[prev + i + 1] + row[2];
+      depth[base + i + 1] = depth[prev + i + 1] + row[3];
+      count[base + i + 1] = count[prev + i + 1] + row[4];
     }
   }
 }

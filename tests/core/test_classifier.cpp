@@ -2,6 +2,7 @@
 // generalise to held-back ones.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
 
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/StrongClassifier.hpp"
@@ -135,6 +136,30 @@ TEST_CASE("binned error ranks an informative feature above a useless one", "[cor
   REQUIRE(eg < 0.5f * eb);
   REQUIRE(eb <= 1.0001f);
   REQUIRE(eg >= 0.f);
+}
+
+TEST_CASE("binnedErrorSplit4 is binnedErrorSplit bit for bit, rows anywhere", "[core][weak]") {
+  constexpr int n = 37, split = 11;  // odd sizes
+  Rng r(21);
+  static Code rows[4][n];  // one row apart from the others below
+  Code apart[n];
+  float w[n];
+  for (int i = 0; i < n; ++i) {
+    w[i] = r.uniform(0.f, 0.05f);
+    for (int k = 0; k < 4; ++k) {
+      Response x = sample(i < split, r);
+      if (r.below(7) == 0) x = Response{};  // some invalid responses
+      rows[k][i] = encode(x, static_cast<FeatureKind>(k % kNumFeatureKinds));
+    }
+    apart[i] = rows[2][i];
+  }
+  const Code* const codes[4] = {rows[0], rows[1], apart, rows[3]};
+  float e4[4];
+  WeakClassifier::binnedErrorSplit4(codes, w, split, n, e4);
+  for (int k = 0; k < 4; ++k) {
+    const float e = WeakClassifier::binnedErrorSplit(codes[k], w, split, n);
+    REQUIRE(std::memcmp(&e, &e4[k], sizeof e) == 0);
+  }
 }
 
 namespace {

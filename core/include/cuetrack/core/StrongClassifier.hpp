@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "cuetrack/core/CellKernels.hpp"
 #include "cuetrack/core/Config.hpp"
 #include "cuetrack/core/FeaturePool.hpp"
 #include "cuetrack/core/TrainingSet.hpp"
@@ -93,19 +94,13 @@ class StrongClassifier {
     int k = 0;
     if constexpr (K != FeatureKind::Depth && std::is_same_v<U, uint32_t> &&
                   std::is_same_v<S, int32_t>)
-      k = codeCellsFrame4(K, f, t, wins, valid, n, cells, order);
+      k = cellk::codeFrame(K, f, t, wins, valid, n, cells, order);  // SIMD: 4 at a time
     for (; k < n; ++k) {
       const int i = order != nullptr ? order[k] : k;
       cells[i] = static_cast<uint16_t>(
           valid[i] ? WeakClassifier::cellOf(evaluateKind<K>(f, wins[i], t), K) : kLutCells);
     }
   }
-  // codeCells of a Gray or Colour feature on frame tables, four windows at a time with
-  // SSE2 (each lane the scalar path's IEEE operations). Returns how many of the n
-  // windows (in visiting order) it coded: a multiple of 4, 0 without SSE2.
-  static int codeCellsFrame4(FeatureKind kind, const Feature& f, const FrameTables& t,
-                             const Box* wins, const uint8_t* valid, int n, uint16_t* cells,
-                             const uint16_t* order);
   void findDistinct();
 
   Feature _feature[kMaxWeakClassifiers];

@@ -1,0 +1,166 @@
+// SSE2 cell coder (CellKernels.hpp): 4 windows per instruction, each lane the scalar
+// path's IEEE operations (featureRect, evaluateKind, angleIndex, magIndexSq).
+#include "cuetrack/core/CellKernels.hpp"
+#if defined(CUETRACK_CELLK_SSE2)
+#include <emmintrin.h>
+
+#include "cuetrack/core/WeakClassifier.hpp"
+
+namespace cuetrack::cellk::sse2 {
+namespace {
+
+inline __m128i maxEpi32(__m128i a, __m128i b) {
+  const __m128i gt = _mm_cmpgt_epi32(a, b);
+  return _mm_or_si128(_mm_and_si128(gt, a), _mm_andnot_si128(gt, b));
+}
+inline __m128i minEpi32(__m128i a, __m128i b) {
+  const __m128i gt = _mm_cmpgt_epi32(a, b);
+  return _mm_or_si128(_mm_and_si128(gt, b), _mm_andnot_si128(gt, a));
+}
+inline __m128i selectEpi32(__m128i mask, __m128i a, __m128i b) {
+  return _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b));
+}
+inline __m128 selectPs(__m128 mask, __m128 a, __m128 b) {
+  return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+}
+
+}  // namespace
+
+int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Box* wins,
+              const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order) {
+  if (kind == FeatureKind::Depth) return 0;
+  const __m128 fx = _mm_set1_ps(f.x), fy = _mm_set1_ps(f.y), fw = _mm_set1_ps(f.w),
+               fh = _mm_set1_ps(f.h);
+  const __m128 ox = _mm_set1_ps(static_cast<float>(t.originX));
+  const __m128 oy = _mm_set1_ps(static_cast<float>(t.originY));
+  const __m128 half = _mm_set1_ps(4096.5f);
+  const __m128i k4096 = _mm_set1_epi32(4096), two = _mm_set1_epi32(2), one = _mm_set1_epi32(1);
+  const __m128i zero = _mm_setzero_si128(), notOne = _mm_set1_epi32(~1);
+  const __m128i width = _mm_set1_epi32(t.width), height = _mm_set1_epi32(t.height);
+  const __m128 zeroPs = _mm_setzero_ps();
+  const __m128 signMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+  const float minMag = binning(kind).minMag;
+  const __m128i magBase = _mm_set1_epi32(static_cast<int>(fmath::floatBits(minMag * minMag) >> 22));
+  const __m128i magMax = _mm_set1_epi32(kLutMags - 1);
+  const bool gray = kind == FeatureKind::Gray;
+  const int stride = t.stride;
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    int idx[4];
+    for (int j = 0; j < 4; ++j) idx[j] = order != nullptr ? order[k + j] : k + j;
+    static_assert(sizeof(Box) == 4 * sizeof(float), "Box is x, y, w, h");
+    __m128 wx = _mm_loadu_ps(&wins[idx[0]].x), wy = _mm_loadu_ps(&wins[idx[1]].x),
+           ww = _mm_loadu_ps(&wins[idx[2]].x), wh = _mm_loadu_ps(&wins[idx[3]].x);
+    _MM_TRANSPOSE4_PS(wx, wy, ww, wh);
+    // featureRect
+    const __m128 fx0 = _mm_sub_ps(_mm_add_ps(wx, _mm_mul_ps(fx, ww)), ox);
+    const __m128 fy0 = _mm_sub_ps(_mm_add_ps(wy, _mm_mul_ps(fy, wh)), oy);
+    __m128i a = _mm_sub_epi32(_mm_cvttps_epi32(_mm_add_ps(fx0, half)), k4096);
+    __m128i b = _mm_sub_epi32(
+        _mm_cvttps_epi32(_mm_add_ps(_mm_add_ps(fx0, _mm_mul_ps(fw, ww)), half)), k4096);
+    __m128i c = _mm_sub_epi32(_mm_cvttps_epi32(_mm_add_ps(fy0, half)), k4096);
+    __m128i d = _mm_sub_epi32(
+        _mm_cvttps_epi32(_mm_add_ps(_mm_add_ps(fy0, _mm_mul_ps(fh, wh)), half)), k4096);
+    b = maxEpi32(b, _mm_add_epi32(a, two));
+    d = maxEpi32(d, _mm_add_epi32(c, two));
+    a = maxEpi32(a, zero);
+    c = maxEpi32(c, zero);
+    b = minEpi32(b, width);
+    d = minEpi32(d, height);
+    const __m128i bw = _mm_sub_epi32(b, a), dh = _mm_sub_epi32(d, c);
+    const __m128i ok = _mm_and_si128(_mm_cmpgt_epi32(bw, one), _mm_cmpgt_epi32(dh, one));
+    const __m128i ew = _mm_and_si128(bw, notOne), eh = _mm_and_si128(dh, notOne);
+    const __m128i x1 = _mm_add_epi32(a, ew), y1 = _mm_add_epi32(c, eh);
+    // (x1 - x0) * (y1 - y0) < 2^24: the float product is exact, as the int one.
+    const __m128 area = _mm_mul_ps(_mm_cvtepi32_ps(ew), _mm_cvtepi32_ps(eh));
+    const __m128 invArea = _mm_div_ps(_mm_set1_ps(1.f), area);
+    // Lanes with no rectangle or an invalid window read cell 0 (their cell is kLutCells).
+    const __m128i validMask = _mm_cmpgt_epi32(
+        _mm_setr_epi32(valid[idx[0]], valid[idx[1]], valid[idx[2]], valid[idx[3]]), zero);
+    const __m128i use = _mm_and_si128(ok, validMask);
+    // Row offsets y * stride (< 2^24: exact in float).
+    const __m128 strideF = _mm_set1_ps(static_cast<float>(stride));
+    const auto rowOff = [&](__m128i y) {
+      return _mm_cvttps_epi32(_mm_mul_ps(_mm_cvtepi32_ps(y), strideF));
+    };
+    alignas(16) int okv[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(okv), use);
+    __m128 gx, gy;
+    if (gray) {
+      const __m128i xm = _mm_srai_epi32(_mm_add_epi32(a, x1), 1);
+      const __m128i ym = _mm_srai_epi32(_mm_add_epi32(c, y1), 1);
+      const __m128i r0 = rowOff(c), r1 = rowOff(ym), r2 = rowOff(y1);
+      alignas(16) int o[9][4];
+      const __m128i xcol[3] = {a, xm, x1};
+      const __m128i rrow[3] = {r0, r1, r2};
+      for (int yy = 0; yy < 3; ++yy)
+        for (int xx = 0; xx < 3; ++xx)
+          _mm_store_si128(reinterpret_cast<__m128i*>(o[yy * 3 + xx]),
+                          _mm_and_si128(use, _mm_add_epi32(rrow[yy], xcol[xx])));
+      const uint32_t* g = t.gray;
+      __m128i cc[9];
+      for (int e = 0; e < 9; ++e)
+        cc[e] = _mm_setr_epi32(static_cast<int>(g[o[e][0]]), static_cast<int>(g[o[e][1]]),
+                               static_cast<int>(g[o[e][2]]), static_cast<int>(g[o[e][3]]));
+      // Quadrant sums (true sums < 2^31: the int32 conversion is the uint32 one).
+      const auto quad = [](__m128i p, __m128i q, __m128i r, __m128i u) {
+        return _mm_cvtepi32_ps(_mm_add_epi32(_mm_sub_epi32(_mm_sub_epi32(p, q), r), u));
+      };
+      const __m128 q0 = quad(cc[4], cc[3], cc[1], cc[0]);
+      const __m128 q1 = quad(cc[5], cc[4], cc[2], cc[1]);
+      const __m128 q2 = quad(cc[7], cc[6], cc[4], cc[3]);
+      const __m128 q3 = quad(cc[8], cc[7], cc[5], cc[4]);
+      const __m128 kk = _mm_mul_ps(_mm_set1_ps(2.f), invArea);
+      gx = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(q1, q3), _mm_add_ps(q0, q2)), kk);
+      gy = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(q2, q3), _mm_add_ps(q0, q1)), kk);
+    } else {
+      const __m128i r0 = rowOff(c), r1 = rowOff(y1);
+      alignas(16) int o[4][4];
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[0]), _mm_and_si128(use, _mm_add_epi32(r0, a)));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[1]), _mm_and_si128(use, _mm_add_epi32(r0, x1)));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[2]), _mm_and_si128(use, _mm_add_epi32(r1, a)));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[3]), _mm_and_si128(use, _mm_add_epi32(r1, x1)));
+      const auto rectOf = [&](const int32_t* tb) {
+        __m128i v[4];
+        for (int e = 0; e < 4; ++e)
+          v[e] = _mm_setr_epi32(tb[o[e][0]], tb[o[e][1]], tb[o[e][2]], tb[o[e][3]]);
+        // at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0)
+        return _mm_cvtepi32_ps(_mm_add_epi32(_mm_sub_epi32(_mm_sub_epi32(v[3], v[2]), v[1]), v[0]));
+      };
+      gx = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), rectOf(t.alpha2)), invArea);
+      gy = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.866025404f), rectOf(t.beta)), invArea);
+    }
+    // angleIndex
+    const __m128 ax = _mm_and_ps(gx, signMask), ay = _mm_and_ps(gy, signMask);
+    const __m128 steep = _mm_cmpgt_ps(ay, ax);
+    const __m128 mx = selectPs(steep, ay, ax), mn = selectPs(steep, ax, ay);
+    const __m128 pos = _mm_cmpgt_ps(mx, zeroPs);
+    const __m128i r = _mm_and_si128(
+        _mm_castps_si128(pos), _mm_cvttps_epi32(_mm_div_ps(_mm_mul_ps(mn, _mm_set1_ps(64.f)),
+                                                           selectPs(pos, mx, _mm_set1_ps(1.f)))));
+    alignas(16) int rv[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(rv), r);
+    const __m128i s = _mm_setr_epi32(kAngleSectors.sub[rv[0]], kAngleSectors.sub[rv[1]],
+                                     kAngleSectors.sub[rv[2]], kAngleSectors.sub[rv[3]]);
+    const __m128i iq = selectEpi32(_mm_castps_si128(steep), _mm_sub_epi32(_mm_set1_epi32(7), s), s);
+    const __m128i yPos = _mm_castps_si128(_mm_cmpge_ps(gy, zeroPs));
+    const __m128i xPos = _mm_castps_si128(_mm_cmpge_ps(gx, zeroPs));
+    const __m128i xNeg = _mm_castps_si128(_mm_cmplt_ps(gx, zeroPs));
+    const __m128i upper = selectEpi32(xPos, iq, _mm_sub_epi32(_mm_set1_epi32(15), iq));
+    const __m128i lower = selectEpi32(xNeg, _mm_add_epi32(_mm_set1_epi32(16), iq),
+                                      _mm_sub_epi32(_mm_set1_epi32(31), iq));
+    const __m128i angle = selectEpi32(yPos, upper, lower);
+    // magIndexSq
+    const __m128 mag2 = _mm_add_ps(_mm_mul_ps(gx, gx), _mm_mul_ps(gy, gy));
+    __m128i mi = _mm_sub_epi32(_mm_srli_epi32(_mm_castps_si128(mag2), 22), magBase);
+    mi = minEpi32(maxEpi32(mi, zero), magMax);
+    const __m128i cell = _mm_add_epi32(_mm_mullo_epi16(angle, _mm_set1_epi32(kLutMags)), mi);
+    alignas(16) int cv[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(cv), cell);
+    for (int j = 0; j < 4; ++j) cells[idx[j]] = static_cast<uint16_t>(okv[j] ? cv[j] : kLutCells);
+  }
+  return k;
+}
+
+}  // namespace cuetrack::cellk::sse2
+#endif
