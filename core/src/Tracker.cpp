@@ -173,6 +173,60 @@ Particle Tracker::searchParticle(bool wide) {
   return q;
 }
 
+bool Tracker::grayTemplate(const Box& win, float* out) {
+  extractPatch(_channels.tables(), win, &_probe);
+  constexpr int kN = kPatchSize * kPatchSize;
+  float mean = 0.f;
+  for (int j = 0; j < kPatchSize; ++j) {
+    const float* r0 = _probe.gray + j * kPatchStride;
+    const float* r1 = r0 + kPatchStride;
+    for (int i = 0; i < kPatchSize; ++i) {
+      const float v = r1[i + 1] - r1[i] - r0[i + 1] + r0[i];  // the cell's mean grey
+      out[j * kPatchSize + i] = v;
+      mean += v;
+    }
+  }
+  mean /= static_cast<float>(kN);
+  float ss = 0.f;
+  for (int i = 0; i < kN; ++i) {
+    out[i] -= mean;
+    ss += out[i] * out[i];
+  }
+  if (!(ss > 1e-3f)) return false;
+  const float inv = 1.f / fmath::sqrtf(ss);
+  for (int i = 0; i < kN; ++i) out[i] *= inv;
+  return true;
+}
+
+Box Tracker::templateScale(const Box& est) {
+  int k = _config.templateScaleSteps;
+  if (k > kMaxTemplateScaleSteps) k = kMaxTemplateScaleSteps;
+  const int side = 2 * k + 1;
+  const float cx = est.x + 0.5f * est.w, cy = est.y + 0.5f * est.h;
+  float best = -2.f;
+  int bi = k, bj = k;
+  for (int j = 0; j < side; ++j) {
+    const float h = est.h * fmath::fastExp(_config.templateScaleStep * static_cast<float>(j - k));
+    for (int i = 0; i < side; ++i) {
+      const float w = est.w * fmath::fastExp(_config.templateScaleStep * static_cast<float>(i - k));
+      if (!grayTemplate(Box{cx - 0.5f * w, cy - 0.5f * h, w, h}, _probeGray)) continue;
+      float ncc = 0.f;
+      for (int q = 0; q < kPatchSize * kPatchSize; ++q) ncc += _probeGray[q] * _anchorGray[q];
+      if (ncc > best) {
+        best = ncc;
+        bi = i;
+        bj = j;
+      }
+    }
+  }
+  // A poor best match: the target has turned, changed or is occluded; no information.
+  if (best < _config.templateMinNcc) return est;
+  const float g = _config.templateGain * _config.templateScaleStep;
+  const float w = est.w * fmath::fastExp(g * static_cast<float>(bi - k));
+  const float h = est.h * fmath::fastExp(g * static_cast<float>(bj - k));
+  return Box{cx - 0.5f * w, cy - 0.5f * h, w, h};
+}
+
 void Tracker::addExample(const Box& win, bool positive) {
   const int slot = _set.add(_channels.tables(), win, positive);
   _cache.refreshExample(slot, _pool, _set);
@@ -317,6 +371,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     return InitError::BoxTooSmall;  // cannot happen with kMaxPoolFeatures (static_assert-backed)
   _set.reset(_config.numTrainingExamples, _config.initialPositives);
   addExample(b, true);  // slot 0: the anchor
+  _haveTemplate = !_is3d && _config.templateScaleSteps > 0 && grayTemplate(b, _anchorGray);
   for (int i = 1; i < _config.initialPositives; ++i) {
     const float s = fmath::fastExp(0.03f * _rng.gaussian());
     const Box j{b.x + 0.03f * b.w * _rng.gaussian(), b.y + 0.03f * b.h * _rng.gaussian(), b.w * s,
@@ -451,6 +506,7 @@ TrackResult Tracker::update(const Frame& frame) {
     estBox = particleBox(est);
     c = estBox.empty() ? -1.f : _strong.evaluate(_channels.tables(), estBox);
   }
+  if (_haveTemplate && !_is3d && !estBox.empty() && !wasLost) estBox = templateScale(estBox);
   if (!_is3d && _config.sizeGain < 1.f && !estBox.empty()) {
     // The estimate's size jitters from frame to frame, the target's changes smoothly:
     // an alpha-beta filter on ln w and ln h (its rate term follows a steady zoom).

@@ -69,6 +69,10 @@ class Tracker {
   void learn(const Box& estimate, const PixelRect& roi);
   bool medianDepthMm(const Frame& frame, const Box& box, float* out);
   Particle searchParticle(bool wide);
+  // 2D: the estimate's size nudged towards the best match of the init box's template.
+  Box templateScale(const Box& est);
+  // Zero-mean, unit-norm grey cells of `win` into out (kPatchSize^2); false if flat.
+  bool grayTemplate(const Box& win, float* out);
 
   TrackerConfig _config{};
   uint64_t _seed = 0;
@@ -103,6 +107,10 @@ class Tracker {
   uint8_t _band[kMaxParticles];    // scoring order: row band of each window
   uint16_t _order[kMaxParticles];  // scoring order: particle indices by band
   float _featureErrors[kMaxPoolFeatures];
+  ExamplePatch _probe;                              // grayTemplate's scratch patch
+  float _anchorGray[kPatchSize * kPatchSize] = {};  // the init box's grey template
+  float _probeGray[kPatchSize * kPatchSize] = {};
+  bool _haveTemplate = false;
   uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
 };
 

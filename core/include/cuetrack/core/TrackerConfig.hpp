@@ -18,6 +18,8 @@ enum class Estimator : uint8_t {
   WeightedMean,  // the weighted mean of all particles
 };
 
+inline constexpr int kMaxTemplateScaleSteps = 4;
+
 struct TrackerConfig {
   // Paper parameters
   int numParticles = 2000;        // <= kMaxParticles
@@ -56,6 +58,14 @@ struct TrackerConfig {
   float cylinderSizeNoise = 0.002f;  // adaptCylinderSize: std of ln D and ln H per frame
   float sizeGain = 0.3f;             // 2D: alpha-beta filter on ln w, ln h: alpha
   float sizeRateGain = 0.05f;        // ... beta (the rate: steady zooms are followed without lag)
+  // 2D scale anchor: the classifier peaks at whatever size it learnt last, so the size
+  // random-walks. Each frame the init box's grey template is matched (NCC) on a
+  // (2K+1)^2 ladder of widths x heights around the estimate; if the best match is good
+  // (the target still looks as it did), the size moves templateGain of the way there.
+  int templateScaleSteps = 2;       // K, <= kMaxTemplateScaleSteps; 0 = off
+  float templateScaleStep = 0.04f;  // ladder step of ln w, ln h
+  float templateMinNcc = 0.85f;     // best match needed
+  float templateGain = 0.3f;        // fraction of the ladder's correction applied
 };
 
 enum class Preset : uint8_t {
