@@ -174,14 +174,34 @@ Particle Tracker::searchParticle(bool wide) {
 }
 
 bool Tracker::grayTemplate(const Box& win, float* out) {
-  extractPatch(_channels.tables(), win, &_probe);
+  // Mean grey of each of kPatchSize^2 cells (the cell edges of extractPatch), grey only:
+  // 25 windows a frame, so the other channels are not worth reading.
+  const FrameTables t = _channels.tables();
+  int xs[kPatchSize + 1], ys[kPatchSize + 1];
+  const float ox = win.x - static_cast<float>(t.originX);
+  const float oy = win.y - static_cast<float>(t.originY);
+  for (int i = 0; i <= kPatchSize; ++i) {
+    const float f = static_cast<float>(i) / static_cast<float>(kPatchSize);
+    const int x = fmath::roundToInt(ox + f * win.w), y = fmath::roundToInt(oy + f * win.h);
+    xs[i] = x < 0 ? 0 : (x > t.width ? t.width : x);
+    ys[i] = y < 0 ? 0 : (y > t.height ? t.height : y);
+  }
   constexpr int kN = kPatchSize * kPatchSize;
   float mean = 0.f;
   for (int j = 0; j < kPatchSize; ++j) {
-    const float* r0 = _probe.gray + j * kPatchStride;
-    const float* r1 = r0 + kPatchStride;
+    int y0 = ys[j], y1 = ys[j + 1];
+    if (y1 <= y0) {
+      if (y0 >= t.height) y0 = t.height - 1;
+      y1 = y0 + 1;
+    }
     for (int i = 0; i < kPatchSize; ++i) {
-      const float v = r1[i + 1] - r1[i] - r0[i + 1] + r0[i];  // the cell's mean grey
+      int x0 = xs[i], x1 = xs[i + 1];
+      if (x1 <= x0) {
+        if (x0 >= t.width) x0 = t.width - 1;
+        x1 = x0 + 1;
+      }
+      const float v = detail::rect(t.gray, t.stride, x0, y0, x1, y1) /
+                      static_cast<float>((x1 - x0) * (y1 - y0));
       out[j * kPatchSize + i] = v;
       mean += v;
     }

@@ -107,7 +107,6 @@ class Tracker {
   uint8_t _band[kMaxParticles];    // scoring order: row band of each window
   uint16_t _order[kMaxParticles];  // scoring order: particle indices by band
   float _featureErrors[kMaxPoolFeatures];
-  ExamplePatch _probe;                              // grayTemplate's scratch patch
   float _anchorGray[kPatchSize * kPatchSize] = {};  // the init box's grey template
   float _probeGray[kPatchSize * kPatchSize] = {};
   bool _haveTemplate = false;
