@@ -15,14 +15,16 @@ Tracker& sharedTracker() {
 }
 
 // Ablations of the beyond-the-paper switches: "<preset>-<switch off>", e.g.
-// best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder).
+// best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
+// best-noanchor (no 2D scale anchor).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
     const char* suffix;
     bool TrackerConfig::*flag;
   };
   static const Off kOffs[] = {{"-nolost", &TrackerConfig::lostDetection},
-                              {"-fixedsize", &TrackerConfig::adaptCylinderSize}};
+                              {"-fixedsize", &TrackerConfig::adaptCylinderSize},
+                              {"-noanchor", &TrackerConfig::scaleAnchor2d}};
   for (const Off& o : kOffs) {
     const std::string suffix(o.suffix);
     if (name.size() <= suffix.size() ||

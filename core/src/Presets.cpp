@@ -52,6 +52,7 @@ TrackerConfig presetConfig(Preset preset) {
       c.adaptCylinderSize = true;
       c.lostDetection = true;
       c.fallbackTo2d = true;
+      c.scaleAnchor2d = true;
       c.estimator = Estimator::WeightedMean;
       break;
   }

@@ -198,6 +198,80 @@ Particle Tracker::searchParticle(bool wide) {
   return q;
 }
 
+bool Tracker::grayTemplate(const Box& win, float* out) {
+  // Mean grey of each of kPatchSize^2 cells (the cell edges of extractPatch), grey only:
+  // 25 windows a frame, so the other channels are not worth reading.
+  const FrameTables t = _channels.tables();
+  int xs[kPatchSize + 1], ys[kPatchSize + 1];
+  const float ox = win.x - static_cast<float>(t.originX);
+  const float oy = win.y - static_cast<float>(t.originY);
+  for (int i = 0; i <= kPatchSize; ++i) {
+    const float f = static_cast<float>(i) / static_cast<float>(kPatchSize);
+    const int x = fmath::roundToInt(ox + f * win.w), y = fmath::roundToInt(oy + f * win.h);
+    xs[i] = x < 0 ? 0 : (x > t.width ? t.width : x);
+    ys[i] = y < 0 ? 0 : (y > t.height ? t.height : y);
+  }
+  constexpr int kN = kPatchSize * kPatchSize;
+  float mean = 0.f;
+  for (int j = 0; j < kPatchSize; ++j) {
+    int y0 = ys[j], y1 = ys[j + 1];
+    if (y1 <= y0) {
+      if (y0 >= t.height) y0 = t.height - 1;
+      y1 = y0 + 1;
+    }
+    for (int i = 0; i < kPatchSize; ++i) {
+      int x0 = xs[i], x1 = xs[i + 1];
+      if (x1 <= x0) {
+        if (x0 >= t.width) x0 = t.width - 1;
+        x1 = x0 + 1;
+      }
+      const float v = detail::rect(t.gray, t.stride, x0, y0, x1, y1) /
+                      static_cast<float>((x1 - x0) * (y1 - y0));
+      out[j * kPatchSize + i] = v;
+      mean += v;
+    }
+  }
+  mean /= static_cast<float>(kN);
+  float ss = 0.f;
+  for (int i = 0; i < kN; ++i) {
+    out[i] -= mean;
+    ss += out[i] * out[i];
+  }
+  if (!(ss > 1e-3f)) return false;
+  const float inv = 1.f / fmath::sqrtf(ss);
+  for (int i = 0; i < kN; ++i) out[i] *= inv;
+  return true;
+}
+
+Box Tracker::templateScale(const Box& est) {
+  int k = _config.templateScaleSteps;
+  if (k > kMaxTemplateScaleSteps) k = kMaxTemplateScaleSteps;
+  const int side = 2 * k + 1;
+  const float cx = est.x + 0.5f * est.w, cy = est.y + 0.5f * est.h;
+  float best = -2.f;
+  int bi = k, bj = k;
+  for (int j = 0; j < side; ++j) {
+    const float h = est.h * fmath::fastExp(_config.templateScaleStep * static_cast<float>(j - k));
+    for (int i = 0; i < side; ++i) {
+      const float w = est.w * fmath::fastExp(_config.templateScaleStep * static_cast<float>(i - k));
+      if (!grayTemplate(Box{cx - 0.5f * w, cy - 0.5f * h, w, h}, _probeGray)) continue;
+      float ncc = 0.f;
+      for (int q = 0; q < kPatchSize * kPatchSize; ++q) ncc += _probeGray[q] * _anchorGray[q];
+      if (ncc > best) {
+        best = ncc;
+        bi = i;
+        bj = j;
+      }
+    }
+  }
+  // A poor best match: the target has turned, changed or is occluded; no information.
+  if (best < _config.templateMinNcc) return est;
+  const float g = _config.templateGain * _config.templateScaleStep;
+  const float w = est.w * fmath::fastExp(g * static_cast<float>(bi - k));
+  const float h = est.h * fmath::fastExp(g * static_cast<float>(bj - k));
+  return Box{cx - 0.5f * w, cy - 0.5f * h, w, h};
+}
+
 void Tracker::addExample(const Box& win, bool positive) {
   const int slot = _set.add(_channels.tables(), win, positive);
   _cache.refreshExample(slot, _pool, _set);
@@ -342,6 +416,8 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     return InitError::BoxTooSmall;  // cannot happen with kMaxPoolFeatures (static_assert-backed)
   _set.reset(_config.numTrainingExamples, _config.initialPositives);
   addExample(b, true);  // slot 0: the anchor
+  _haveTemplate = !_is3d && _config.scaleAnchor2d && _config.templateScaleSteps > 0 &&
+                  grayTemplate(b, _anchorGray);
   for (int i = 1; i < _config.initialPositives; ++i) {
     const float s = fmath::fastExp(0.03f * _rng.gaussian());
     const Box j{b.x + 0.03f * b.w * _rng.gaussian(), b.y + 0.03f * b.h * _rng.gaussian(), b.w * s,
@@ -514,6 +590,7 @@ TrackResult Tracker::update(const Frame& frame) {
     estBox = particleBox(est);
     c = estBox.empty() ? -1.f : _strong.evaluate(_channels.tables(), estBox);
   }
+  if (_haveTemplate && !_is3d && !estBox.empty() && !wasLost) estBox = templateScale(estBox);
   if (!_is3d && _config.sizeGain < 1.f && !estBox.empty()) {
     // The estimate's size jitters from frame to frame, the target's changes smoothly:
     // an alpha-beta filter on ln w and ln h (its rate term follows a steady zoom).

@@ -72,6 +72,10 @@ class Tracker {
   // adaptCylinderSize: moves D, H and the centre of est and every particle toward the
   // silhouette measured in depth; false when nothing was measured.
   bool followTargetSize(const Frame& frame, Particle& est);
+  // 2D: the estimate's size nudged towards the best match of the init box's template.
+  Box templateScale(const Box& est);
+  // Zero-mean, unit-norm grey cells of `win` into out (kPatchSize^2); false if flat.
+  bool grayTemplate(const Box& win, float* out);
 
   TrackerConfig _config{};
   uint64_t _seed = 0;
@@ -106,6 +110,9 @@ class Tracker {
   uint8_t _band[kMaxParticles];    // scoring order: row band of each window
   uint16_t _order[kMaxParticles];  // scoring order: particle indices by band
   float _featureErrors[kMaxPoolFeatures];
+  float _anchorGray[kPatchSize * kPatchSize] = {};  // the init box's grey template
+  float _probeGray[kPatchSize * kPatchSize] = {};
+  bool _haveTemplate = false;
   uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
 };
 

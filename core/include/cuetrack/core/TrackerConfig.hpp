@@ -18,6 +18,8 @@ enum class Estimator : uint8_t {
   WeightedMean,  // the weighted mean of all particles
 };
 
+inline constexpr int kMaxTemplateScaleSteps = 4;
+
 struct TrackerConfig {
   // Paper parameters
   int numParticles = 2000;        // <= kMaxParticles
@@ -35,6 +37,7 @@ struct TrackerConfig {
   bool adaptCylinderSize = false;  // D, H (and centre) follow the silhouette measured in depth
   bool lostDetection = false;      // declare lost, freeze learning, re-acquire
   bool fallbackTo2d = false;       // 3D/depth requested but the frame has none: run 2D RGB
+  bool scaleAnchor2d = false;      // 2D: the size follows the init template's best match
 
   // Implementation parameters (docs/algorithm.md), the same in every preset
   Estimator estimator = Estimator::WeightedMean;
@@ -59,6 +62,14 @@ struct TrackerConfig {
   float cylinderCentreGain = 0.2f;   // ... and the window's centre this part to the silhouette's
   float sizeGain = 0.3f;             // 2D: alpha-beta filter on ln w, ln h: alpha
   float sizeRateGain = 0.05f;        // ... beta (the rate: steady zooms are followed without lag)
+  // 2D scale anchor (scaleAnchor2d): the classifier peaks at whatever size it learnt last, so the
+  // size random-walks. Each frame the init box's grey template is matched (NCC) on a (2K+1)^2
+  // ladder of widths x heights around the estimate; if the best match is good (the target still
+  // looks as it did), the size moves templateGain of the way there.
+  int templateScaleSteps = 2;       // K, <= kMaxTemplateScaleSteps
+  float templateScaleStep = 0.04f;  // ladder step of ln w, ln h
+  float templateMinNcc = 0.85f;     // best match needed
+  float templateGain = 0.3f;        // fraction of the ladder's correction applied
 };
 
 enum class Preset : uint8_t {
