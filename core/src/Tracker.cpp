@@ -96,6 +96,10 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
   if (_config.numWeakClassifiers < 1) _config.numWeakClassifiers = 1;
   if (_config.numWeakClassifiers > kMaxWeakClassifiers)
     _config.numWeakClassifiers = kMaxWeakClassifiers;
+  if (_config.lostAfter2d < 0) _config.lostAfter2d = 0;
+  if (_config.numWeakClassifiers2d < 0) _config.numWeakClassifiers2d = 0;
+  if (_config.numWeakClassifiers2d > kMaxWeakClassifiers)
+    _config.numWeakClassifiers2d = kMaxWeakClassifiers;
   if (_config.numTrainingExamples > kMaxTrainingExamples)
     _config.numTrainingExamples = kMaxTrainingExamples;
   if (_config.numTrainingExamples < 8) _config.numTrainingExamples = 8;
@@ -366,6 +370,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _is3d = _config.stateSpace == StateSpace::Cylinder3d;
   _depthFeatures = _config.useDepth;
   float surfaceMm = 0.f;
+  bool fellBack = false;
   if (_is3d || _depthFeatures) {
     bool ok = depthOk;
     if (ok && _is3d && !frame.intrinsics.valid()) {
@@ -377,7 +382,15 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
       if (!_config.fallbackTo2d) return InitError::NoDepth;
       _is3d = false;
       _depthFeatures = false;
+      fellBack = true;
     }
+  }
+  const LostDetector lostDefaults{};
+  _lost.lostAfter = lostDefaults.lostAfter;
+  _numWeak = _config.numWeakClassifiers;
+  if (fellBack) {
+    if (_config.numWeakClassifiers2d > 0) _numWeak = _config.numWeakClassifiers2d;
+    if (_config.lostAfter2d > 0) _lost.lostAfter = _config.lostAfter2d;
   }
   _k = frame.intrinsics;
   _rng.reseed(_seed);
@@ -427,8 +440,8 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   addNegatives(b, _set.numNegatives() + _config.numTrainingExamples,
                roi);  // fill the negative FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
-  _strong.train(_pool, _cache, _set, _config.numWeakClassifiers, _featureErrors,
-                _config.boostCandidates, _config.anchorWeight);
+  _strong.train(_pool, _cache, _set, _numWeak, _featureErrors, _config.boostCandidates,
+                _config.anchorWeight);
 
   _filter.setSize(_config.numParticles);
   _filter.fill(q);
@@ -482,8 +495,8 @@ void Tracker::learn(const Box& estimate, const PixelRect& roi) {
     const int replaced = _pool.update(_featureErrors, _rng);
     if (replaced >= 0) _cache.refreshFeature(replaced, _pool, _set);
   }
-  _strong.train(_pool, _cache, _set, _config.numWeakClassifiers, _featureErrors,
-                _config.boostCandidates, _config.anchorWeight);
+  _strong.train(_pool, _cache, _set, _numWeak, _featureErrors, _config.boostCandidates,
+                _config.anchorWeight);
 }
 
 TrackResult Tracker::update(const Frame& frame) {

@@ -88,11 +88,17 @@ TEST_CASE("preset names round-trip and configure the paper's tests", "[core][pre
   const TrackerConfig best = presetConfig(Preset::Best);
   REQUIRE(
       (best.adaptCylinderSize && best.lostDetection && best.fallbackTo2d && best.scaleAnchor2d));
+  // The 2D fallback: the paper's RGB M, a longer run of low confidence before lost.
+  REQUIRE(best.numWeakClassifiers == 23);
+  REQUIRE(best.numWeakClassifiers2d == 32);
+  REQUIRE(best.lostAfter2d == 25);
   for (int i = 0; i < kNumPresets - 1; ++i) {
     const TrackerConfig c = presetConfig(static_cast<Preset>(i));
     REQUIRE_FALSE(c.adaptCylinderSize);
     REQUIRE_FALSE(c.lostDetection);
     REQUIRE_FALSE(c.scaleAnchor2d);
+    REQUIRE(c.numWeakClassifiers2d == 0);
+    REQUIRE(c.lostAfter2d == 0);
   }
 }
 

@@ -88,6 +88,7 @@ class Tracker {
   TrackState _state = TrackState::Idle;
   bool _is3d = false;
   bool _depthFeatures = false;
+  int _numWeak = 1;  // M for this track: numWeakClassifiers, or ...2d in the 2D fallback
   int _imageW = 0, _imageH = 0;
   CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;

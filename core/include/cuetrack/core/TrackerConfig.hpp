@@ -38,6 +38,11 @@ struct TrackerConfig {
   bool lostDetection = false;      // declare lost, freeze learning, re-acquire
   bool fallbackTo2d = false;       // 3D/depth requested but the frame has none: run 2D RGB
   bool scaleAnchor2d = false;      // 2D: the size follows the init template's best match
+  // fallbackTo2d: when a 3D/depth configuration runs 2D RGB, these replace the 3D values
+  // (0 = same as in 3D): the RGB-only classifier needs more weak classifiers (the paper's
+  // RGB tests use 32), and partial occlusions in RGB dip the confidence for longer.
+  int numWeakClassifiers2d = 0;  // M in the 2D fallback, <= kMaxWeakClassifiers
+  int lostAfter2d = 0;           // lost detection in the 2D fallback: frames of low confidence
 
   // Implementation parameters (docs/algorithm.md), the same in every preset
   Estimator estimator = Estimator::WeightedMean;
