@@ -59,6 +59,7 @@ const char* usage() {
          "  --seed S           first seed (default 1)\n"
          "  --frames N         use only the first N frames of each sequence\n"
          "  --skip-bad-frames  let readers skip unreadable frames (counted) instead of failing\n"
+         "  --rgb-only         drop the depth of every sequence (best then runs 2D; 2.x fail)\n"
          "  --max-mem MIB      memory for one decoded sequence (default 4096)\n"
          "  --json FILE        figures in the schema of docs/bench-json.md\n"
          "  --markdown FILE    the tables as Markdown\n"
@@ -157,6 +158,8 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       }
     } else if (a == "--skip-bad-frames") {
       o->skipBadFrames = true;
+    } else if (a == "--rgb-only") {
+      o->rgbOnly = true;
     } else if (a == "--quiet") {
       o->quiet = true;
     } else if (a.size() > 1 && a[0] == '-') {

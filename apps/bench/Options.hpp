@@ -24,6 +24,7 @@ struct Options {
   int maxFrames = 0;  // 0: whole sequences
   size_t maxMemMiB = 4096;
   bool skipBadFrames = false;
+  bool rgbOnly = false;  // drop the depth of every sequence (tests the trackers' RGB-only mode)
   bool quiet = false;
   std::string jsonPath, markdownPath, csvDir, plotDir, resultsDir, overlayDir;
   PaperReference paper = PaperReference::None;

@@ -100,6 +100,8 @@ int main(int argc, char** argv) {
     if (seq.skippedFrames > 0)
       std::fprintf(stderr, "cuetrack-bench: %s: %d unreadable frames skipped\n", seq.name.c_str(),
                    seq.skippedFrames);
+    if (options.rgbOnly)
+      for (CachedFrame& f : seq.frames) f.depthMm.clear();
     seq.gtHeader = bobotHeader(arg);
 
     long planned = 0;

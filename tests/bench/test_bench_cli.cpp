@@ -93,6 +93,20 @@ TEST_CASE("ablations of best (a beyond-the-paper switch off) run as configuratio
   CHECK(r.out.find("best-nolost") != std::string::npos);
   CHECK(r.out.find("best-fixeds") != std::string::npos);
 }
+
+TEST_CASE("--rgb-only drops depth: best falls back to 2D, 2.1 cannot start") {
+  const char* kNoDepth = "cannot run: init failed: no depth";
+  Run r = runBench("synth:moving --frames 6 --runs 1 --quiet --config best,2.1");
+  CHECK(r.exitCode == 0);
+  CHECK(r.out.find(kNoDepth) == std::string::npos);  // control: the scene has depth
+  r = runBench("synth:moving --frames 6 --runs 1 --quiet --rgb-only --config best,2.1");
+  CHECK(r.exitCode == 0);
+  CHECK(r.out.find(kNoDepth) != std::string::npos);
+  const size_t row = r.out.find("\ncuetrack best ");  // best's row of the first table
+  REQUIRE(row != std::string::npos);
+  const std::string line = r.out.substr(row + 1, r.out.find('\n', row + 1) - row - 1);
+  CHECK(line.find("cannot run") == std::string::npos);
+}
 #endif
 
 #if CUETRACK_BENCH_TEST_READERS
