@@ -78,6 +78,18 @@ int centralRun(const uint8_t* occ, int n, int centre, int search, int maxGap, in
 int maxGapFor(float sidePx) {
   return 2 + fmath::floorToInt(sidePx * (1.f / 32.f));
 }
+
+// The central run of occ[0..n) around `centre` for a box side of sidePx, as a length and
+// a midpoint in image px (the window starts at `origin`); false when there is none.
+bool centralExtent(const uint8_t* occ, int n, int centre, float sidePx, int origin, float* lengthPx,
+                   float* midPx) {
+  int first = 0;
+  const int run =
+      centralRun(occ, n, centre, 2 + fmath::floorToInt(0.125f * sidePx), maxGapFor(sidePx), &first);
+  *lengthPx = static_cast<float>(run);
+  *midPx = static_cast<float>(origin + first) + 0.5f * static_cast<float>(run);
+  return run > 0;
+}
 }  // namespace
 
 SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float nearMm,
@@ -116,12 +128,7 @@ SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float
       }
     }
     for (int i = 0; i < nx; ++i) occ[i] = occupied(in[i], valid[i], m) ? 1 : 0;
-    int first = 0;
-    const int run =
-        centralRun(occ, nx, cx, 2 + fmath::floorToInt(0.125f * box.w), maxGapFor(box.w), &first);
-    out.hasWidth = run > 0;
-    out.widthPx = static_cast<float>(run);
-    out.centreXPx = static_cast<float>(wx.lo + first) + 0.5f * static_cast<float>(run);
+    out.hasWidth = centralExtent(occ, nx, cx, box.w, wx.lo, &out.widthPx, &out.centreXPx);
   }
   // Height: rows of the window, sampled on the box's middle columns.
   const Span bx = clipSpan(box.x + kBandFrom * box.w, box.x + kBandTo * box.w, depth.width);
@@ -139,12 +146,7 @@ SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float
       }
       occ[j] = occupied(nIn, nValid, m) ? 1 : 0;
     }
-    int first = 0;
-    const int run =
-        centralRun(occ, ny, cy, 2 + fmath::floorToInt(0.125f * box.h), maxGapFor(box.h), &first);
-    out.hasHeight = run > 0;
-    out.heightPx = static_cast<float>(run);
-    out.centreYPx = static_cast<float>(wy.lo + first) + 0.5f * static_cast<float>(run);
+    out.hasHeight = centralExtent(occ, ny, cy, box.h, wy.lo, &out.heightPx, &out.centreYPx);
   }
   return out;
 }
