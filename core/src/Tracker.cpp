@@ -26,6 +26,9 @@ constexpr float kDefaultDtS = 1.f / 30.f;
 constexpr float kSlabMargin = 0.05f;
 constexpr float kMaxSizeStep = 0.03f;
 constexpr float kMaxCentreStep = 0.03f;
+// ... and an axis adapts only if, at init, the box and the measured extent agree within
+// this factor (SilhouetteCalibration).
+constexpr float kMaxCalibration = 1.6f;
 
 float frameDtS(uint64_t last, uint64_t now) {
   if (now <= last) return kDefaultDtS;
@@ -443,6 +446,9 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _strong.train(_pool, _cache, _set, _numWeak, _featureErrors, _config.boostCandidates,
                 _config.anchorWeight);
 
+  _silhouette = SilhouetteCalibration{};
+  if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
+    calibrateSilhouette(frame, b, q.size[0]);
   _filter.setSize(_config.numParticles);
   _filter.fill(q);
   _lastTimeUs = frame.timeUs;
@@ -450,28 +456,69 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   return InitError::None;
 }
 
-bool Tracker::followTargetSize(const Frame& frame, Particle& est) {
-  const Box b = particleBox(est);
+bool Tracker::measureTarget(const Frame& frame, const Box& b, float diameterMm, SilhouetteExtent* e,
+                            float* surfaceMm) {
   if (b.empty()) return false;
   // The surface depth as the depth correction reads it (inner 10% of the window).
   const float iw = b.w * 0.1f < 2.f ? 2.f : b.w * 0.1f, ih = b.h * 0.1f < 2.f ? 2.f : b.h * 0.1f;
   const Box inner{b.x + 0.5f * (b.w - iw), b.y + 0.5f * (b.h - ih), iw, ih};
-  const float surfaceMm = _channels.meanDepthMm(clipBox(inner, _imageW, _imageH));
-  if (!(surfaceMm > 0.f)) return false;
-  const float halfSlabMm = 0.5f * est.size[0] + kSlabMargin * surfaceMm;
-  const SilhouetteExtent e =
-      measureSilhouette(frame.depthMm, b, surfaceMm - halfSlabMm, surfaceMm + halfSlabMm);
-  const float gain = _config.cylinderSizeGain, centreGain = _config.cylinderCentreGain;
-  float fD = 1.f, fH = 1.f, du = 0.f, dv = 0.f;  // size factors, centre shifts [px]
-  if (e.hasWidth && e.widthPx < _k.fx) {
-    fD = sizeStep(cylinderDiameterMm(e.widthPx, surfaceMm, _k) / est.size[0], gain);
-    du = fmath::clampf(centreGain * (e.centreXPx - (b.x + 0.5f * b.w)), -kMaxCentreStep * b.w,
-                       kMaxCentreStep * b.w);
+  *surfaceMm = _channels.meanDepthMm(clipBox(inner, _imageW, _imageH));
+  if (!(*surfaceMm > 0.f)) return false;
+  const float halfSlabMm = 0.5f * diameterMm + kSlabMargin * *surfaceMm;
+  *e = measureSilhouette(frame.depthMm, b, *surfaceMm - halfSlabMm, *surfaceMm + halfSlabMm);
+  return e->hasWidth || e->hasHeight;
+}
+
+void Tracker::calibrateSilhouette(const Frame& frame, const Box& b, float diameterMm) {
+  _silhouette = SilhouetteCalibration{};
+  SilhouetteExtent e;
+  float surfaceMm = 0.f;
+  if (!measureTarget(frame, b, diameterMm, &e, &surfaceMm)) return;
+  // An axis follows its measurement only if, on the init box, the measurement described
+  // the box within a factor kMaxCalibration: otherwise the slab does not show the target
+  // (it merges with its support, or is mostly holes) and that side stays fixed (paper).
+  if (e.hasWidth) {
+    const float ratio = b.w / e.widthPx;
+    if (ratio * kMaxCalibration >= 1.f && ratio <= kMaxCalibration) {
+      _silhouette.hasWidth = true;
+      _silhouette.widthRatio = ratio;
+      _silhouette.centreDx = (b.x + 0.5f * b.w - e.centreXPx) / b.w;
+    }
   }
   if (e.hasHeight) {
-    const float heightMm = cylinderHeightMm(e.heightPx, surfaceMm, est.size[0] * fD, _k);
+    const float ratio = b.h / e.heightPx;
+    if (ratio * kMaxCalibration >= 1.f && ratio <= kMaxCalibration) {
+      _silhouette.hasHeight = true;
+      _silhouette.heightRatio = ratio;
+      _silhouette.centreDy = (b.y + 0.5f * b.h - e.centreYPx) / b.h;
+    }
+  }
+}
+
+bool Tracker::followTargetSize(const Frame& frame, Particle& est) {
+  const Box b = particleBox(est);
+  SilhouetteExtent e;
+  float surfaceMm = 0.f;
+  if (!measureTarget(frame, b, est.size[0], &e, &surfaceMm)) return false;
+  // The measured extent in the init box's terms: the user's box may include parts the
+  // measurement misses (a chair's or a person's legs: the middle columns see the floor
+  // between them) or background margin; the init frame fixed that ratio and offset.
+  const SilhouetteCalibration& cal = _silhouette;
+  const float gain = _config.cylinderSizeGain, centreGain = _config.cylinderCentreGain;
+  float fD = 1.f, fH = 1.f, du = 0.f, dv = 0.f;  // size factors, centre shifts [px]
+  const float widthPx = e.widthPx * cal.widthRatio;
+  if (e.hasWidth && cal.hasWidth && widthPx < _k.fx) {
+    fD = sizeStep(cylinderDiameterMm(widthPx, surfaceMm, _k) / est.size[0], gain);
+    const float midPx = e.centreXPx + cal.centreDx * b.w;
+    du = fmath::clampf(centreGain * (midPx - (b.x + 0.5f * b.w)), -kMaxCentreStep * b.w,
+                       kMaxCentreStep * b.w);
+  }
+  if (e.hasHeight && cal.hasHeight) {
+    const float heightMm =
+        cylinderHeightMm(e.heightPx * cal.heightRatio, surfaceMm, est.size[0] * fD, _k);
     fH = sizeStep(heightMm / est.size[1], gain);
-    dv = fmath::clampf(centreGain * (e.centreYPx - (b.y + 0.5f * b.h)), -kMaxCentreStep * b.h,
+    const float midPx = e.centreYPx + cal.centreDy * b.h;
+    dv = fmath::clampf(centreGain * (midPx - (b.y + 0.5f * b.h)), -kMaxCentreStep * b.h,
                        kMaxCentreStep * b.h);
   }
   if (fD == 1.f && fH == 1.f && du == 0.f && dv == 0.f) return false;

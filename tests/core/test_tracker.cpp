@@ -7,6 +7,7 @@
 
 #include "AllocCounter.hpp"
 #include "SceneFixture.hpp"
+#include "cuetrack/core/SizeMeasure.hpp"
 #include "cuetrack/core/Tracker.hpp"
 
 using namespace cuetrack;
@@ -221,4 +222,43 @@ TEST_CASE("the 2D scale anchor holds a still target's size", "[core][tracker]") 
   INFO("mean |ln size error| with the anchor " << on / 3 << ", without " << off / 3);
   CHECK(on < off);
   CHECK(on / 3 < 0.05);
+}
+
+TEST_CASE("best's measured size keeps a box that includes parts depth misses", "[core][tracker]") {
+  // The square's bottom third is two thin "legs" in depth (the background shows between
+  // them): the silhouette measured through the box's middle columns is only the top two
+  // thirds. The user's box includes the legs; best must keep that box's height, not
+  // shrink to the measured silhouette (the init frame calibrates the measurement).
+  static uint16_t legs[test::MovingSquare::kW * test::MovingSquare::kH];
+  Frame f = scene.render(0, true);
+  const Box box = scene.truth(0);
+  const int w = f.depthMm.width, h = f.depthMm.height;
+  std::memcpy(legs, f.depthMm.data, sizeof legs);
+  const int x0 = static_cast<int>(box.x), y0 = static_cast<int>(box.y),
+            side = static_cast<int>(box.w);
+  for (int y = y0 + 2 * side / 3; y < y0 + side; ++y)
+    for (int x = x0 + 6; x < x0 + side - 6; ++x) legs[y * w + x] = 3000;
+  f.depthMm = DepthView{legs, w, h, w};
+  // Control: the measurement itself sees only the upper part.
+  const SilhouetteExtent e = measureSilhouette(f.depthMm, box, 1300.f, 1700.f);
+  REQUIRE(e.hasHeight);
+  REQUIRE(e.heightPx < 0.75f * box.h);
+
+  tracker.configure(presetConfig(Preset::Best), 1);
+  REQUIRE(tracker.init(f, box) == InitError::None);
+  REQUIRE(tracker.uses3d());
+  double err = 0.0;
+  int n = 0;
+  for (int t = 1; t <= 120; ++t) {
+    Frame ft = f;
+    ft.timeUs = static_cast<uint64_t>(t) * 33333u;
+    const TrackResult r = tracker.update(ft);
+    REQUIRE(r.box.h > 0.f);
+    if (t > 60) {
+      err += std::fabs(std::log(r.box.h / box.h));
+      ++n;
+    }
+  }
+  INFO("mean |ln(h / box h)| over the last 60 frames: " << err / n);
+  CHECK(err / n < 0.06);
 }

@@ -18,6 +18,7 @@
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/SizeMeasure.hpp"
 #include "cuetrack/core/StrongClassifier.hpp"
 #include "cuetrack/core/TrackResult.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
@@ -72,6 +73,11 @@ class Tracker {
   // adaptCylinderSize: moves D, H and the centre of est and every particle toward the
   // silhouette measured in depth; false when nothing was measured.
   bool followTargetSize(const Frame& frame, Particle& est);
+  // The silhouette around window b (slab from the surface depth and diameterMm).
+  bool measureTarget(const Frame& frame, const Box& b, float diameterMm, SilhouetteExtent* e,
+                     float* surfaceMm);
+  // At init: how the user's box relates to the silhouette measured in it.
+  void calibrateSilhouette(const Frame& frame, const Box& b, float diameterMm);
   // 2D: the estimate's size nudged towards the best match of the init box's template.
   Box templateScale(const Box& est);
   // Zero-mean, unit-norm grey cells of `win` into out (kPatchSize^2); false if flat.
@@ -114,6 +120,15 @@ class Tracker {
   float _anchorGray[kPatchSize * kPatchSize] = {};  // the init box's grey template
   float _probeGray[kPatchSize * kPatchSize] = {};
   bool _haveTemplate = false;
+  // adaptCylinderSize: the init box / measured extent per axis, and the box centre's
+  // offset from the measured midpoint as a fraction of the side (an axis the init frame
+  // could not measure plausibly stays fixed).
+  struct SilhouetteCalibration {
+    bool hasWidth = false, hasHeight = false;
+    float widthRatio = 1.f, heightRatio = 1.f;
+    float centreDx = 0.f, centreDy = 0.f;
+  };
+  SilhouetteCalibration _silhouette{};
   uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
 };
 
