@@ -75,4 +75,11 @@ TEST_CASE("openFrameSource errors are one line naming the spec", "[open][bad]") 
     CHECK_FALSE(openFrameSource((tmp / "v.avi").c_str(), SourceOptions{}, err, sizeof err));
     CHECK(std::string(err).find("needs a host build with OpenCV") != std::string::npos);
   }
+  // A panned still: decoded by OpenCV; its own errors name the image at fault.
+  const std::string pan =
+      "pan:" + tmp / "none.png" + "," + tmp / "none.png" + ",1,1,8,8,500,500,4,4";
+  CHECK_FALSE(openFrameSource(pan.c_str(), SourceOptions{}, err, sizeof err));
+  CHECK(std::string(err).find(frameSourcesHaveOpenCv()
+                                  ? "none.png: cannot decode image"
+                                  : "needs a host build with OpenCV") != std::string::npos);
 }

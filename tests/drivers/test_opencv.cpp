@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+#include <set>
 #include <string>
 
 #include "SharedData.hpp"
@@ -362,4 +363,101 @@ TEST_CASE("OTB and BoBoT-video writers round-trip the ground truth", "[opencv][o
   CHECK_FALSE(bad.open((tmp / "x.mp4").c_str()));
   CHECK(std::string(bad.error()).find("x.mp4: the video name must end in .avi") !=
         std::string::npos);
+}
+
+namespace {
+// A still of 128 x 96: colour and depth that encode their own pixel position.
+void writeStill(const TempDir& tmp) {
+  cv::Mat bgr(96, 128, CV_8UC3), depth(96, 128, CV_16UC1);
+  for (int y = 0; y < 96; ++y)
+    for (int x = 0; x < 128; ++x) {
+      bgr.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<uint8_t>(40 + x),
+                                          static_cast<uint8_t>(60 + y), static_cast<uint8_t>(128));
+      depth.at<uint16_t>(y, x) = static_cast<uint16_t>(1000 + 10 * x + y);
+    }
+  REQUIRE(cv::imwrite(tmp / "c.png", bgr));
+  REQUIRE(cv::imwrite(tmp / "d.png", depth));
+}
+}  // namespace
+
+TEST_CASE("panned still: crops, depth, ground truth and intrinsics move together",
+          "[opencv][pan]") {
+  TempDir tmp;
+  writeStill(tmp);
+  const std::string spec =
+      "pan:" + tmp / "c.png" + "," + tmp / "d.png" + ",40,30,30,20,100,101,64,48:20";
+  StillPanReader r;
+  REQUIRE(r.open(spec.c_str()));
+  CHECK(r.frameCount() == 20);
+  // Named by the still's folder, its stem and the box's corner.
+  const std::string name = r.name();
+  CHECK(name == "pan-" + tmp.path().substr(tmp.path().find_last_of('/') + 1) + "-c-40-30");
+  auto slot = std::make_unique<FrameSlot>();
+  int frames = 0;
+  std::set<int> offsets;
+  while (r.next(*slot) == ReadStatus::Ok) {
+    INFO("frame " << frames);
+    ++frames;
+    // The crop is the still less 1/16 per side: 112 x 84; cx, cy move by that margin.
+    REQUIRE(slot->rgb.width() == 112);
+    REQUIRE(slot->rgb.height() == 84);
+    REQUIRE(slot->hasDepth);
+    CHECK(slot->intrinsics.fx == 100.f);
+    CHECK(slot->intrinsics.cx == 64.f - 8.f);
+    CHECK(slot->intrinsics.cy == 48.f - 6.f);
+    REQUIRE(slot->hasGroundTruth);
+    const Box& g = slot->groundTruth;
+    CHECK(g.w == 30.f);
+    CHECK(g.h == 20.f);
+    // The crop's offset from the box's shift: depth there is the still's.
+    const int ox = 40 - static_cast<int>(g.x), oy = 30 - static_cast<int>(g.y);
+    CHECK(ox >= 0);
+    CHECK(ox <= 16);
+    CHECK(oy >= 0);
+    CHECK(oy <= 12);
+    offsets.insert(ox * 100 + oy);
+    for (int y = 0; y < 84; y += 7)
+      for (int x = 0; x < 112; x += 5)
+        REQUIRE(slot->depthMm.data()[y * 112 + x] == 1000 + 10 * (x + ox) + (y + oy));
+    // Colour: the still's plus small noise.
+    double diff = 0;
+    for (int x = 0; x < 112; ++x)
+      diff += std::abs(slot->rgb.data()[10 * 112 + x].b - (40 + x + ox));
+    CHECK(diff / 112 < 4.0);
+    CHECK(slot->timeUs == static_cast<uint64_t>(std::llround((frames - 1) * 1e6 / 30.0)));
+  }
+  CHECK(frames == 20);
+  CHECK(offsets.size() > 10);  // it moves
+
+  // Depth units: 0.2 mm per unit (TUM) scales every reading.
+  StillPanReader tum;
+  const std::string tumSpec =
+      "pan:" + tmp / "c.png" + "," + tmp / "d.png" + ",40,30,30,20,100,101,64,48,0.2:1";
+  REQUIRE(tum.open(tumSpec.c_str()));
+  REQUIRE(tum.next(*slot) == ReadStatus::Ok);
+  const int ox = 40 - static_cast<int>(slot->groundTruth.x);
+  const int oy = 30 - static_cast<int>(slot->groundTruth.y);
+  CHECK(slot->depthMm.data()[0] == std::lround(0.2 * (1000 + 10 * ox + oy)));
+}
+
+TEST_CASE("panned still: bad specs give one line naming the fault", "[opencv][pan][bad]") {
+  TempDir tmp;
+  writeStill(tmp);
+  const std::string c = tmp / "c.png", d = tmp / "d.png";
+  const auto fails = [](const std::string& spec, const std::string& expect) {
+    StillPanReader r;
+    INFO(spec);
+    REQUIRE_FALSE(r.open(spec.c_str()));
+    INFO(r.error());
+    CHECK(std::string(r.error()).find(expect) != std::string::npos);
+    CHECK(std::string(r.error()).find('\n') == std::string::npos);
+  };
+  fails("pan:" + c + "," + d + ",1,2,3", "expected pan:RGB,DEPTH,x,y,w,h,fx,fy,cx,cy");
+  fails("pan:" + c + "," + d + ",40,30,wide,20,100,101,64,48", "w 'wide' is not a number");
+  fails("pan:" + c + "," + d + ",40,30,-3,20,100,101,64,48", "must be positive");
+  fails("pan:" + c + "," + d + ",400,300,30,20,100,101,64,48", "lies outside the 128x96 still");
+  fails("pan:" + c + "," + d + ",40,30,30,20,100,101,64,48:0", "frame count '0'");
+  fails("pan:" + tmp / "nope.png" + "," + d + ",40,30,30,20,100,101,64,48",
+        "nope.png: cannot decode image");
+  fails("pan:" + c + "," + c + ",40,30,30,20,100,101,64,48", "c.png: depth must be a 16-bit");
 }

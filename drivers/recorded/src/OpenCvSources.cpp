@@ -506,3 +506,190 @@ bool loadColourImage(const char* path, FixedImage<Rgb8, kMaxImageWidth, kMaxImag
 }
 
 }  // namespace cuetrack
+
+// ---- A real RGB-D still, panned ---------------------------------------------------
+
+namespace cuetrack {
+
+namespace {
+
+bool parseFloat(const std::string& s, float* out) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (*end != '\0' || !std::isfinite(v)) return false;
+  *out = static_cast<float>(v);
+  return true;
+}
+
+// The part of a inside b (empty when they do not meet).
+Box intersectBox(const Box& a, const Box& b) {
+  const float x0 = std::max(a.x, b.x), y0 = std::max(a.y, b.y);
+  const float x1 = std::min(a.x + a.w, b.x + b.w), y1 = std::min(a.y + a.h, b.y + b.h);
+  if (!(x1 > x0) || !(y1 > y0)) return Box{};
+  return Box{x0, y0, x1 - x0, y1 - y0};
+}
+
+}  // namespace
+
+StillPanReader::StillPanReader() : _img(new CvImages) {}
+StillPanReader::~StillPanReader() = default;
+
+bool StillPanReader::open(const char* spec, const SourceOptions& opt) {
+  _error[0] = '\0';
+  _next = 0;
+  _seed = opt.seed;
+  std::string body = spec;
+  if (body.rfind("pan:", 0) == 0) body = body.substr(4);
+  // Optional ":frames" after the last field.
+  _frames = 150;
+  const size_t lastComma = body.find_last_of(',');
+  const size_t colon = body.find(':', lastComma == std::string::npos ? 0 : lastComma);
+  if (colon != std::string::npos) {
+    const std::string n = body.substr(colon + 1);
+    char* end = nullptr;
+    const long v = std::strtol(n.c_str(), &end, 10);
+    if (n.empty() || *end != '\0' || v < 1 || v > 1000000) {
+      std::snprintf(_error, sizeof _error, "%s: frame count '%s' is not a number in 1..1000000",
+                    spec, n.c_str());
+      return false;
+    }
+    _frames = static_cast<int>(v);
+    body = body.substr(0, colon);
+  }
+  std::vector<std::string> f;
+  for (size_t start = 0;;) {
+    const size_t comma = body.find(',', start);
+    f.push_back(body.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (f.size() != 10 && f.size() != 11) {
+    std::snprintf(_error, sizeof _error,
+                  "%s: expected pan:RGB,DEPTH,x,y,w,h,fx,fy,cx,cy[,mmPerUnit][:frames] "
+                  "(%zu fields)",
+                  spec, f.size());
+    return false;
+  }
+  float v[9] = {0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 1.f};
+  static const char* const kField[9] = {"x", "y", "w", "h", "fx", "fy", "cx", "cy", "mmPerUnit"};
+  for (size_t i = 2; i < f.size(); ++i) {
+    if (!parseFloat(f[i], &v[i - 2])) {
+      std::snprintf(_error, sizeof _error, "%s: %s '%s' is not a number", spec, kField[i - 2],
+                    f[i].c_str());
+      return false;
+    }
+  }
+  if (!(v[2] > 0.f) || !(v[3] > 0.f) || !(v[4] > 0.f) || !(v[5] > 0.f) || !(v[8] > 0.f)) {
+    std::snprintf(_error, sizeof _error, "%s: w, h, fx, fy and mmPerUnit must be positive", spec);
+    return false;
+  }
+  if (opt.maxFrames >= 0 && opt.maxFrames < _frames) _frames = opt.maxFrames;
+  const std::string& rgbPath = f[0];
+  const std::string& depthPath = f[1];
+  // Name: the still's folder (above color/ or rgb/), its stem and the box's corner, e.g.
+  // pan-nyu-joinmap-5-302-102: two targets of one still get two names.
+  const auto lastPart = [](const std::string& p) {
+    const size_t k = p.find_last_of('/');
+    return k == std::string::npos ? p : p.substr(k + 1);
+  };
+  const size_t slash = rgbPath.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? std::string() : rgbPath.substr(0, slash);
+  std::string folder = lastPart(dir);
+  if ((folder == "color" || folder == "rgb") && dir.find('/') != std::string::npos)
+    folder = lastPart(dir.substr(0, dir.find_last_of('/')));
+  char corner[48];
+  std::snprintf(corner, sizeof corner, "-%ld-%ld", std::lround(v[0]), std::lround(v[1]));
+  _name = "pan-" + (folder.empty() ? std::string() : folder + "-") + stem(rgbPath) + corner;
+
+  const cv::Mat bgr = cv::imread(rgbPath, cv::IMREAD_COLOR);
+  if (bgr.empty()) {
+    std::snprintf(_error, sizeof _error, "%s: cannot decode image (missing, truncated or corrupt)",
+                  rgbPath.c_str());
+    return false;
+  }
+  if (bgr.cols > kMaxImageWidth || bgr.rows > kMaxImageHeight || bgr.cols < 32 || bgr.rows < 32) {
+    std::snprintf(_error, sizeof _error, "%s: %dx%d is not within 32x32 .. %dx%d", rgbPath.c_str(),
+                  bgr.cols, bgr.rows, kMaxImageWidth, kMaxImageHeight);
+    return false;
+  }
+  const cv::Mat depth = cv::imread(depthPath, cv::IMREAD_ANYDEPTH);
+  if (depth.empty()) {
+    std::snprintf(_error, sizeof _error,
+                  "%s: cannot decode depth image (missing, truncated or corrupt)",
+                  depthPath.c_str());
+    return false;
+  }
+  if (depth.type() != CV_16UC1) {
+    std::snprintf(_error, sizeof _error, "%s: depth must be a 16-bit single-channel image",
+                  depthPath.c_str());
+    return false;
+  }
+  if (depth.cols != bgr.cols || depth.rows != bgr.rows) {
+    std::snprintf(_error, sizeof _error, "%s: depth %dx%d does not match colour %dx%d",
+                  depthPath.c_str(), depth.cols, depth.rows, bgr.cols, bgr.rows);
+    return false;
+  }
+  cv::cvtColor(bgr, _img->bgr, cv::COLOR_BGR2RGB);  // kept as RGB
+  if (v[8] == 1.f)
+    _img->depth = depth;
+  else
+    depth.convertTo(_img->depth, CV_16U, static_cast<double>(v[8]));  // rounds, saturates
+  _box = Box{v[0], v[1], v[2], v[3]};
+  const Box inside =
+      intersectBox(_box, Box{0.f, 0.f, static_cast<float>(bgr.cols), static_cast<float>(bgr.rows)});
+  if (inside.empty()) {
+    std::snprintf(_error, sizeof _error, "%s: box %g,%g %gx%g lies outside the %dx%d still", spec,
+                  static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2]),
+                  static_cast<double>(v[3]), bgr.cols, bgr.rows);
+    return false;
+  }
+  _marginX = bgr.cols / 16;
+  _marginY = bgr.rows / 16;
+  _cropW = bgr.cols - 2 * _marginX;
+  _cropH = bgr.rows - 2 * _marginY;
+  _k = CameraIntrinsics{v[4], v[5], v[6] - static_cast<float>(_marginX),
+                        v[7] - static_cast<float>(_marginY)};
+  return true;
+}
+
+ReadStatus StillPanReader::next(FrameSlot& out) {
+  if (_img->bgr.empty()) {
+    std::snprintf(_error, sizeof _error, "pan: still not open");
+    return ReadStatus::Error;
+  }
+  if (_next >= _frames) return ReadStatus::End;
+  const int i = _next++;
+  constexpr double kTwoPi = 6.283185307179586;
+  const int ox = _marginX + static_cast<int>(std::lround(_marginX * std::sin(kTwoPi * i / 60.0)));
+  const int oy = _marginY + static_cast<int>(
+                                std::lround(_marginY * (5.0 / 6.0) * std::sin(kTwoPi * i / 90.0)));
+  // Colour: the crop plus Gaussian noise, the same for a seed and frame on every run.
+  cv::Mat crop;
+  _img->bgr(cv::Rect(ox, oy, _cropW, _cropH)).convertTo(crop, CV_16SC3);
+  cv::Mat noise(crop.size(), CV_16SC3);
+  cv::RNG rng(_seed * 1000003u + static_cast<uint64_t>(i));
+  rng.fill(noise, cv::RNG::NORMAL, 0.0, 2.0);
+  crop += noise;
+  crop.convertTo(_img->rgb, CV_8UC3);  // saturates to 0..255
+  out.rgb.resize(_cropW, _cropH);
+  for (int y = 0; y < _cropH; ++y)
+    std::memcpy(static_cast<void*>(out.rgb.data() + y * _cropW), _img->rgb.ptr(y),
+                static_cast<size_t>(_cropW) * 3);
+  out.depthMm.resize(_cropW, _cropH);
+  for (int y = 0; y < _cropH; ++y)
+    std::memcpy(out.depthMm.data() + y * _cropW, _img->depth.ptr<uint16_t>(oy + y) + ox,
+                static_cast<size_t>(_cropW) * 2);
+  out.hasDepth = true;
+  out.index = i;
+  out.timeUs = static_cast<uint64_t>(std::llround(i * 1e6 / 30.0));
+  out.intrinsics = _k;
+  const Box shifted{_box.x - static_cast<float>(ox), _box.y - static_cast<float>(oy), _box.w,
+                    _box.h};
+  out.hasGroundTruth = true;
+  out.groundTruth =
+      intersectBox(shifted, Box{0.f, 0.f, static_cast<float>(_cropW), static_cast<float>(_cropH)});
+  return ReadStatus::Ok;
+}
+
+}  // namespace cuetrack

@@ -95,7 +95,9 @@ const char* frameSourceHelp() {
          "  <dir>/ with INDEX.txt    fakenect recording (+ groundtruth.txt, BoBoT format)\n"
          "  <dir>/ with rgb/ depth/  RGB-D folder (+ groundtruth.txt, intrinsics.txt)  [OpenCV]\n"
          "  <dir>/ with img/         OTB folder (+ groundtruth_rect.txt)                [OpenCV]\n"
-         "  <file>.avi               BoBoT video (+ <file>.gt.txt)                      [OpenCV]\n";
+         "  <file>.avi               BoBoT video (+ <file>.gt.txt)                      [OpenCV]\n"
+         "  pan:RGB,DEPTH,x,y,w,h,fx,fy,cx,cy[,mmPerUnit][:frames]\n"
+         "                           a real RGB-D still panned (box in px; 150 frames)  [OpenCV]\n";
 }
 
 std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptions& opt, char* err,
@@ -106,6 +108,13 @@ std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptio
   }
   const std::string s = spec;
   if (s.rfind("synth:", 0) == 0) return openSynth(s, opt, err, errLen);
+  if (s.rfind("pan:", 0) == 0) {
+#if CUETRACK_HAVE_OPENCV
+    return openWith<StillPanReader>(spec, opt, err, errLen);
+#else
+    return needsOpenCv(spec, "a panned still (PNG)", err, errLen);
+#endif
+  }
   if (rec::isDirectory(spec)) {
     if (rec::isFile((s + "/INDEX.txt").c_str()))
       return openWith<FakenectReader>(spec, opt, err, errLen);
