@@ -6,7 +6,7 @@
 #   - synthetic RGB-D scenes (the cuetrack-synth generator, in process): cuetrack
 #     2.1-2.5 and best, beside the paper's Table 3 (on its own, other sequences),
 #     and every OpenCV peer on the same frames;
-#   - real Kinect depth (../shared/data/kinect-stills): six targets of the NYU and TUM
+#   - real Kinect depth (../shared/data/kinect-stills): ten targets of the NYU and TUM
 #     stills, each panned by the pan: source, cuetrack 2.1, 2.4, 2.5, best and best
 #     with each switch off, and KCF / CSRT.
 # Environment: CUETRACK_SHARED_DIR (default ../shared), BUILD (build tree, default
@@ -72,7 +72,11 @@ pan_seqs=("pan:$NYU/color/5.png,$NYU/depth/5.pgm,302,102,186,240,$nyu_k"
           "pan:$NYU/color/1.png,$NYU/depth/1.pgm,116,142,96,148,$nyu_k"
           "pan:$TUM/1.png,$TUM/1_depth.png,238,95,156,158,$tum_k"
           "pan:$TUM/1.png,$TUM/1_depth.png,425,217,85,74,$tum_k"
-          "pan:$TUM/1.png,$TUM/1_depth.png,443,293,46,59,$tum_k")
+          "pan:$TUM/1.png,$TUM/1_depth.png,443,293,46,59,$tum_k"
+          "pan:$TUM/1.png,$TUM/1_depth.png,298,62,60,40,$tum_k"
+          "pan:$TUM/1.png,$TUM/1_depth.png,418,128,22,43,$tum_k"
+          "pan:$TUM/1.png,$TUM/1_depth.png,202,257,184,50,$tum_k"
+          "pan:$TUM/1.png,$TUM/1_depth.png,98,171,50,68,$tum_k")
 pan_cmd=("$BENCH" "${pan_seqs[@]}" --tracker cuetrack,opencv-kcf,opencv-csrt
          --config 2.1,2.4,2.5,best,best-fixedsize,best-nolost --runs "$SYN_RUNS"
          --peer-runs "$PEER_RUNS" "${frames_opt[@]}" --markdown "$OUT/pan.md"
@@ -161,8 +165,9 @@ block="$OUT/block.md"
   echo "### Real Kinect depth: panned stills, tests 2.1, 2.4, 2.5, best and its ablations"
   echo
   if [ -f "$OUT/pan.md" ]; then
-    echo "Six targets of the real Kinect stills in ../shared/data/kinect-stills (three chairs of"
-    echo "the NYU frames, a monitor, a telephone and a mug of the TUM frame), each made into 150"
+    echo "Ten targets of the real Kinect stills in ../shared/data/kinect-stills (three chairs of"
+    echo "the NYU frames; of the TUM desk a monitor, a telephone, a mug, the teddy bear half"
+    echo "behind the monitor, a can, the keyboard and a tape roll on its stand), each made into 150"
     echo "frames by the \`pan:\` source: crops sweeping 1/16 of the frame (a camera panning and"
     echo "tilting a few degrees), fresh colour noise per frame, the real depth with its holes."
     echo "Boxes drawn by hand around the whole object (chairs with their legs). cuetrack:"
