@@ -115,14 +115,16 @@ int ParticleFilter::argmaxWeight() const {
   return best;
 }
 
-Particle ParticleFilter::weightedMean() const {
+Particle ParticleFilter::weightedMean(const uint8_t* include) const {
   Particle m;
   m.size[0] = m.size[1] = 0.f;
   float total = 0.f;
-  for (int i = 0; i < _n; ++i) total += _w[i];
+  for (int i = 0; i < _n; ++i)
+    if (include == nullptr || include[i] != 0) total += _w[i];
   if (!(total > 0.f)) return _p[0];
   const float inv = 1.f / total;
   for (int i = 0; i < _n; ++i) {
+    if (include != nullptr && include[i] == 0) continue;
     const float w = _w[i] * inv;
     for (int a = 0; a < 3; ++a) {
       m.p[a] += w * _p[i].p[a];

@@ -649,6 +649,18 @@ TrackResult Tracker::update(const Frame& frame) {
     est = _filter.weightedMean();
     estBox = particleBox(est);
     c = estBox.empty() ? -1.f : _strong.evaluate(_channels.tables(), estBox);
+    if (_config.modeGuard && c < cMax - _config.modeGuardMargin &&
+        0.5f * (cMax + 1.f) >= _config.modeGuardMinConfidence) {
+      // The mean scores far below a confident best particle: the cloud has split (the
+      // target and a look-alike beside it) and the mean lies between; take the best
+      // particle's mode. (Not when no particle is confident: with the target hidden, the
+      // mean's low score is what tells lost detection it is gone.)
+      const Box top = _boxes[_filter.argmaxWeight()];
+      for (int i = 0; i < n; ++i) _inMode[i] = overlap(_boxes[i], top) >= 0.5f ? 1 : 0;
+      est = _filter.weightedMean(_inMode);
+      estBox = particleBox(est);
+      c = estBox.empty() ? -1.f : _strong.evaluate(_channels.tables(), estBox);
+    }
   }
   if (_haveTemplate && !_is3d && !estBox.empty() && !wasLost) estBox = templateScale(estBox);
   if (!_is3d && _config.sizeGain < 1.f && !estBox.empty()) {

@@ -151,3 +151,28 @@ TEST_CASE("systematic resampling keeps particles in proportion to weight", "[cor
   for (int i = 0; i < 2000; ++i) heavy += pf[i].p[0] == 777.f ? 1 : 0;
   REQUIRE(heavy >= 1999);
 }
+
+TEST_CASE("the weighted mean, of all particles or of a chosen subset", "[core][filter]") {
+  static ParticleFilter pf;
+  pf.setSize(6);
+  // Two clusters: at x 10 (weights 1, 1, 2) and at x 100 (weights 3, 1, 0).
+  const float xs[6] = {10.f, 10.f, 10.f, 100.f, 100.f, 100.f};
+  const float ws[6] = {1.f, 1.f, 2.f, 3.f, 1.f, 0.f};
+  for (int i = 0; i < 6; ++i) {
+    pf[i] = Particle{};
+    pf[i].p[0] = xs[i];
+    pf[i].size[0] = xs[i] * 0.5f;
+    pf.weights()[i] = ws[i];
+  }
+  REQUIRE(pf.argmaxWeight() == 3);
+  // All: (40 + 400) / 8 = 55, between the clusters.
+  CHECK(pf.weightedMean().p[0] == Approx(55.f));
+  CHECK(pf.weightedMean().size[0] == Approx(27.5f));
+  const uint8_t right[6] = {0, 0, 0, 1, 1, 1};
+  CHECK(pf.weightedMean(right).p[0] == Approx(100.f));
+  const uint8_t left[6] = {1, 1, 1, 0, 0, 0};
+  CHECK(pf.weightedMean(left).p[0] == Approx(10.f));
+  // Nothing of weight included: particle 0, not a division by zero.
+  const uint8_t zero[6] = {0, 0, 0, 0, 0, 1};
+  CHECK(pf.weightedMean(zero).p[0] == 10.f);
+}

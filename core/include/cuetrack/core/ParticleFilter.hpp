@@ -78,8 +78,9 @@ class ParticleFilter {
   // Low-variance (systematic) resampling by the current weights; one uniform draw.
   void resample(Rng& rng);
   int argmaxWeight() const;
-  // Weighted mean of all particles (weights need not be normalised).
-  Particle weightedMean() const;
+  // Weighted mean of all particles, or of those with include[i] != 0 (weights need not
+  // be normalised); particle 0 when the included weights sum to zero.
+  Particle weightedMean(const uint8_t* include = nullptr) const;
 
  private:
   Particle _p[kMaxParticles];

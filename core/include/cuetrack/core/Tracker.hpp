@@ -116,6 +116,7 @@ class Tracker {
   uint8_t _valid[kMaxParticles];
   uint8_t _band[kMaxParticles];    // scoring order: row band of each window
   uint16_t _order[kMaxParticles];  // scoring order: particle indices by band
+  uint8_t _inMode[kMaxParticles];  // modeGuard: particles in the best particle's mode
   float _featureErrors[kMaxPoolFeatures];
   float _anchorGray[kPatchSize * kPatchSize] = {};  // the init box's grey template
   float _probeGray[kPatchSize * kPatchSize] = {};
