@@ -78,7 +78,7 @@ pan_seqs=("pan:$NYU/color/5.png,$NYU/depth/5.pgm,302,102,186,240,$nyu_k"
           "pan:$TUM/1.png,$TUM/1_depth.png,202,257,184,50,$tum_k"
           "pan:$TUM/1.png,$TUM/1_depth.png,98,171,50,68,$tum_k")
 pan_cmd=("$BENCH" "${pan_seqs[@]}" --tracker cuetrack,opencv-kcf,opencv-csrt
-         --config 2.1,2.4,2.5,best,best-fixedsize,best-nolost --runs "$SYN_RUNS"
+         --config 2.1,2.4,2.5,best,best-fixedsize,best-nolost,best-nomodeguard --runs "$SYN_RUNS"
          --peer-runs "$PEER_RUNS" "${frames_opt[@]}" --markdown "$OUT/pan.md"
          --json "$OUT/pan.json" --csv "$OUT/csv")
 show() { local s="$*"; s=${s//$ROOT\//}; s=${s//$SHARED/..\/shared}; echo "$s"; }
