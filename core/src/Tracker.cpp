@@ -53,6 +53,22 @@ float sizeStep(float ratio, float gain) {
   return fmath::fastExp(fmath::clampf(gain * fmath::fastLog(ratio), -kMaxSizeStep, kMaxSizeStep));
 }
 
+// One axis of the init box against the silhouette's run on it: the ratio side / run and
+// the box centre's offset from the run's midpoint (a fraction of the side). An axis follows
+// its measurement only if they agree within kMaxCalibration: otherwise the slab does not
+// show the target (it merges with its support, or is mostly holes) and that side stays
+// fixed (paper).
+Tracker::AxisCalibration calibrateAxis(float sidePx, float centrePx, float runPx, float runMidPx) {
+  Tracker::AxisCalibration a;
+  const float ratio = sidePx / runPx;
+  if (ratio * kMaxCalibration >= 1.f && ratio <= kMaxCalibration) {
+    a.valid = true;
+    a.ratio = ratio;
+    a.offset = (centrePx - runMidPx) / sidePx;
+  }
+  return a;
+}
+
 // Scales D and H, moving the centre along its ray so the front surface stays put (the
 // depth correction would otherwise read the move as a velocity).
 void rescaleCylinder(Particle& q, float fD, float fH) {
@@ -474,25 +490,8 @@ void Tracker::calibrateSilhouette(const Frame& frame, const Box& b, float diamet
   SilhouetteExtent e;
   float surfaceMm = 0.f;
   if (!measureTarget(frame, b, diameterMm, &e, &surfaceMm)) return;
-  // An axis follows its measurement only if, on the init box, the measurement described
-  // the box within a factor kMaxCalibration: otherwise the slab does not show the target
-  // (it merges with its support, or is mostly holes) and that side stays fixed (paper).
-  if (e.hasWidth) {
-    const float ratio = b.w / e.widthPx;
-    if (ratio * kMaxCalibration >= 1.f && ratio <= kMaxCalibration) {
-      _silhouette.hasWidth = true;
-      _silhouette.widthRatio = ratio;
-      _silhouette.centreDx = (b.x + 0.5f * b.w - e.centreXPx) / b.w;
-    }
-  }
-  if (e.hasHeight) {
-    const float ratio = b.h / e.heightPx;
-    if (ratio * kMaxCalibration >= 1.f && ratio <= kMaxCalibration) {
-      _silhouette.hasHeight = true;
-      _silhouette.heightRatio = ratio;
-      _silhouette.centreDy = (b.y + 0.5f * b.h - e.centreYPx) / b.h;
-    }
-  }
+  if (e.hasWidth) _silhouette.x = calibrateAxis(b.w, b.x + 0.5f * b.w, e.widthPx, e.centreXPx);
+  if (e.hasHeight) _silhouette.y = calibrateAxis(b.h, b.y + 0.5f * b.h, e.heightPx, e.centreYPx);
 }
 
 bool Tracker::followTargetSize(const Frame& frame, Particle& est) {
@@ -506,18 +505,18 @@ bool Tracker::followTargetSize(const Frame& frame, Particle& est) {
   const SilhouetteCalibration& cal = _silhouette;
   const float gain = _config.cylinderSizeGain, centreGain = _config.cylinderCentreGain;
   float fD = 1.f, fH = 1.f, du = 0.f, dv = 0.f;  // size factors, centre shifts [px]
-  const float widthPx = e.widthPx * cal.widthRatio;
-  if (e.hasWidth && cal.hasWidth && widthPx < _k.fx) {
+  const float widthPx = e.widthPx * cal.x.ratio;
+  if (e.hasWidth && cal.x.valid && widthPx < _k.fx) {
     fD = sizeStep(cylinderDiameterMm(widthPx, surfaceMm, _k) / est.size[0], gain);
-    const float midPx = e.centreXPx + cal.centreDx * b.w;
+    const float midPx = e.centreXPx + cal.x.offset * b.w;
     du = fmath::clampf(centreGain * (midPx - (b.x + 0.5f * b.w)), -kMaxCentreStep * b.w,
                        kMaxCentreStep * b.w);
   }
-  if (e.hasHeight && cal.hasHeight) {
+  if (e.hasHeight && cal.y.valid) {
     const float heightMm =
-        cylinderHeightMm(e.heightPx * cal.heightRatio, surfaceMm, est.size[0] * fD, _k);
+        cylinderHeightMm(e.heightPx * cal.y.ratio, surfaceMm, est.size[0] * fD, _k);
     fH = sizeStep(heightMm / est.size[1], gain);
-    const float midPx = e.centreYPx + cal.centreDy * b.h;
+    const float midPx = e.centreYPx + cal.y.offset * b.h;
     dv = fmath::clampf(centreGain * (midPx - (b.y + 0.5f * b.h)), -kMaxCentreStep * b.h,
                        kMaxCentreStep * b.h);
   }

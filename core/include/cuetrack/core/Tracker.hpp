@@ -61,6 +61,13 @@ class Tracker {
   const StrongClassifier& classifier() const { return _strong; }
   const ParticleFilter& particles() const { return _filter; }
 
+  // adaptCylinderSize's calibration of one axis (Tracker.cpp, calibrateAxis).
+  struct AxisCalibration {
+    bool valid = false;
+    float ratio = 1.f;   // box side / measured extent
+    float offset = 0.f;  // (box centre - measured midpoint) / side
+  };
+
  private:
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
   Box particleBox(const Particle& q) const;
@@ -121,13 +128,11 @@ class Tracker {
   float _anchorGray[kPatchSize * kPatchSize] = {};  // the init box's grey template
   float _probeGray[kPatchSize * kPatchSize] = {};
   bool _haveTemplate = false;
-  // adaptCylinderSize: the init box / measured extent per axis, and the box centre's
-  // offset from the measured midpoint as a fraction of the side (an axis the init frame
-  // could not measure plausibly stays fixed).
+  // adaptCylinderSize: per axis, the init box / measured extent, and the box centre's offset
+  // from the measured midpoint as a fraction of the side (an axis the init frame could not
+  // measure plausibly stays fixed).
   struct SilhouetteCalibration {
-    bool hasWidth = false, hasHeight = false;
-    float widthRatio = 1.f, heightRatio = 1.f;
-    float centreDx = 0.f, centreDy = 0.f;
+    AxisCalibration x, y;
   };
   SilhouetteCalibration _silhouette{};
   uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
