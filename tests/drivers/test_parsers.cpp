@@ -118,3 +118,17 @@ TEST_CASE("intrinsics.txt", "[parsers]") {
   const std::string zero = "0 519 325 253\n";
   CHECK_FALSE(parseIntrinsics(zero.data(), zero.size(), &k, err, sizeof err));
 }
+
+TEST_CASE("frame counts of a spec's :frames suffix", "[parsers]") {
+  int n = 0;
+  CHECK(rec::parseFrameCount("1", &n));
+  CHECK(n == 1);
+  CHECK(rec::parseFrameCount("1000000", &n));
+  CHECK(n == 1000000);
+  n = 7;
+  for (const char* bad : {"", "0", "-3", "1000001", "12x", "x", " ", "1.5"}) {
+    INFO("'" << bad << "'");
+    CHECK_FALSE(rec::parseFrameCount(bad, &n));
+    CHECK(n == 7);  // untouched on failure
+  }
+}

@@ -547,14 +547,11 @@ bool StillPanReader::open(const char* spec, const SourceOptions& opt) {
   const size_t colon = body.find(':', lastComma == std::string::npos ? 0 : lastComma);
   if (colon != std::string::npos) {
     const std::string n = body.substr(colon + 1);
-    char* end = nullptr;
-    const long v = std::strtol(n.c_str(), &end, 10);
-    if (n.empty() || *end != '\0' || v < 1 || v > 1000000) {
-      std::snprintf(_error, sizeof _error, "%s: frame count '%s' is not a number in 1..1000000",
-                    spec, n.c_str());
+    if (!rec::parseFrameCount(n.c_str(), &_frames)) {
+      std::snprintf(_error, sizeof _error, "%s: frame count '%s' is not a number in 1..%ld", spec,
+                    n.c_str(), rec::kMaxSpecFrames);
       return false;
     }
-    _frames = static_cast<int>(v);
     body = body.substr(0, colon);
   }
   std::vector<std::string> f;

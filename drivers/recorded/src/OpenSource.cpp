@@ -7,6 +7,7 @@
 
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
+#include "cuetrack/drivers/RecordedParsers.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #if CUETRACK_HAVE_OPENCV
 #include "cuetrack/drivers/OpenCvSources.hpp"
@@ -34,14 +35,11 @@ std::unique_ptr<FrameSource> openSynth(const std::string& spec, const SourceOpti
   if (colon != std::string::npos) {
     scene = rest.substr(0, colon);
     const std::string n = rest.substr(colon + 1);
-    char* end = nullptr;
-    const long v = std::strtol(n.c_str(), &end, 10);
-    if (n.empty() || *end != '\0' || v < 1 || v > 1000000) {
-      std::snprintf(err, errLen, "%s: frame count '%s' is not a number in 1..1000000", spec.c_str(),
-                    n.c_str());
+    if (!rec::parseFrameCount(n.c_str(), &frames)) {
+      std::snprintf(err, errLen, "%s: frame count '%s' is not a number in 1..%ld", spec.c_str(),
+                    n.c_str(), rec::kMaxSpecFrames);
       return nullptr;
     }
-    frames = static_cast<int>(v);
   }
   SceneSpec s;
   if (!makeScene(scene.c_str(), &s)) {

@@ -288,4 +288,12 @@ bool blankLine(const char* line, size_t len) {
   return true;
 }
 
+bool parseFrameCount(const char* text, int* out) {
+  char* end = nullptr;
+  const long v = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || v < 1 || v > kMaxSpecFrames) return false;
+  *out = static_cast<int>(v);
+  return true;
+}
+
 }  // namespace cuetrack::rec

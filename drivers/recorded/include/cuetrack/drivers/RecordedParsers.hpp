@@ -52,6 +52,10 @@ bool parseOtbLine(const char* line, size_t len, float box[4], char* err, size_t 
 // intrinsics.txt: "fx fy cx cy" [px].
 bool parseIntrinsics(const char* text, size_t len, CameraIntrinsics* out, char* err, size_t errLen);
 
+// The frame count of a spec's ":frames" suffix: a whole number in 1..kMaxSpecFrames.
+inline constexpr long kMaxSpecFrames = 1000000;
+bool parseFrameCount(const char* text, int* out);
+
 // Splits a text buffer into lines: returns the next line start/length after *pos, and
 // advances *pos; false at the end. '\r' before '\n' is dropped.
 bool nextLine(const char* text, size_t len, size_t* pos, const char** line, size_t* lineLen);
