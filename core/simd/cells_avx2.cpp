@@ -1,6 +1,6 @@
 // AVX2 cell coder (CellKernels.hpp): the SSE2 coder's lanes, 8 windows at a time, with
 // the table reads as gathers. Each lane is the scalar path's IEEE operations
-// (featureRect, evaluateKind, angleIndex, magIndexSq). Only this file is built with
+// (gridEdge, responseAt, angleIndex, magIndexSq). Only this file is built with
 // -mavx2; the dispatcher calls it after a CPUID check. The last n % 8 windows go to SSE2.
 #include "cuetrack/core/CellKernels.hpp"
 #if defined(CUETRACK_CELLK_AVX2)
@@ -36,14 +36,20 @@ inline __m256i gather(const void* table, __m256i offsets) {
 int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Box* wins,
               const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order) {
   if (kind == FeatureKind::Depth) return 0;
-  const __m256 fx = _mm256_set1_ps(f.x), fy = _mm256_set1_ps(f.y), fw = _mm256_set1_ps(f.w),
-               fh = _mm256_set1_ps(f.h);
-  const __m256 ox = _mm256_set1_ps(static_cast<float>(t.originX));
-  const __m256 oy = _mm256_set1_ps(static_cast<float>(t.originY));
+  // The feature's cell edges, fractions of the window (Features.hpp: featureCells, gridEdge).
+  int cx[3], cy[3];
+  featureCells(f.x, f.w, cx);
+  featureCells(f.y, f.h, cy);
+  __m256 kx[3], ky[3];
+  for (int e = 0; e < 3; ++e) {
+    kx[e] = _mm256_set1_ps(static_cast<float>(cx[e]) * (1.f / static_cast<float>(kGridCells)));
+    ky[e] = _mm256_set1_ps(static_cast<float>(cy[e]) * (1.f / static_cast<float>(kGridCells)));
+  }
+  const __m256 orgX = _mm256_set1_ps(static_cast<float>(t.originX));
+  const __m256 orgY = _mm256_set1_ps(static_cast<float>(t.originY));
   const __m256 half = _mm256_set1_ps(4096.5f);
-  const __m256i k4096 = _mm256_set1_epi32(4096), two = _mm256_set1_epi32(2),
-                one = _mm256_set1_epi32(1);
-  const __m256i zero = _mm256_setzero_si256(), notOne = _mm256_set1_epi32(~1);
+  const __m256i k4096 = _mm256_set1_epi32(4096), one = _mm256_set1_epi32(1);
+  const __m256i zero = _mm256_setzero_si256();
   const __m256i width = _mm256_set1_epi32(t.width), height = _mm256_set1_epi32(t.height);
   const __m256 zeroPs = _mm256_setzero_ps(), onePs = _mm256_set1_ps(1.f);
   const __m256 signMask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
@@ -74,43 +80,42 @@ int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Bo
     const __m256 wy = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(3, 2, 3, 2));
     const __m256 ww = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(1, 0, 1, 0));
     const __m256 wh = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(3, 2, 3, 2));
-    // featureRect
-    const __m256 fx0 = _mm256_sub_ps(_mm256_add_ps(wx, _mm256_mul_ps(fx, ww)), ox);
-    const __m256 fy0 = _mm256_sub_ps(_mm256_add_ps(wy, _mm256_mul_ps(fy, wh)), oy);
-    __m256i a = roundHalfUp(fx0);
-    __m256i bx = roundHalfUp(_mm256_add_ps(fx0, _mm256_mul_ps(fw, ww)));
-    __m256i c = roundHalfUp(fy0);
-    __m256i d = roundHalfUp(_mm256_add_ps(fy0, _mm256_mul_ps(fh, wh)));
-    bx = _mm256_max_epi32(bx, _mm256_add_epi32(a, two));
-    d = _mm256_max_epi32(d, _mm256_add_epi32(c, two));
-    a = _mm256_max_epi32(a, zero);
-    c = _mm256_max_epi32(c, zero);
-    bx = _mm256_min_epi32(bx, width);
-    d = _mm256_min_epi32(d, height);
-    const __m256i bw = _mm256_sub_epi32(bx, a), dh = _mm256_sub_epi32(d, c);
-    const __m256i ok = _mm256_and_si256(_mm256_cmpgt_epi32(bw, one), _mm256_cmpgt_epi32(dh, one));
-    const __m256i ew = _mm256_and_si256(bw, notOne), eh = _mm256_and_si256(dh, notOne);
-    const __m256i x1 = _mm256_add_epi32(a, ew), y1 = _mm256_add_epi32(c, eh);
-    // (x1 - x0) * (y1 - y0) < 2^24: the float product is exact, as the int one.
-    const __m256 area = _mm256_mul_ps(_mm256_cvtepi32_ps(ew), _mm256_cvtepi32_ps(eh));
-    const __m256 invArea = _mm256_div_ps(onePs, area);
+    // gridEdge of each of the feature's edges, clipped to the tables.
+    const __m256 ox = _mm256_sub_ps(wx, orgX), oy = _mm256_sub_ps(wy, orgY);
+    __m256i px[3], py[3];
+    for (int e = 0; e < 3; ++e) {
+      px[e] = _mm256_min_epi32(
+          _mm256_max_epi32(roundHalfUp(_mm256_add_ps(ox, _mm256_mul_ps(kx[e], ww))), zero), width);
+      py[e] = _mm256_min_epi32(
+          _mm256_max_epi32(roundHalfUp(_mm256_add_ps(oy, _mm256_mul_ps(ky[e], wh))), zero), height);
+    }
+    // responseAt: every half non-empty.
+    const __m256i wl = _mm256_sub_epi32(px[1], px[0]), wr = _mm256_sub_epi32(px[2], px[1]);
+    const __m256i ht = _mm256_sub_epi32(py[1], py[0]), hb = _mm256_sub_epi32(py[2], py[1]);
+    const __m256i ok = _mm256_and_si256(
+        _mm256_and_si256(_mm256_cmpgt_epi32(wl, zero), _mm256_cmpgt_epi32(wr, zero)),
+        _mm256_and_si256(_mm256_cmpgt_epi32(ht, zero), _mm256_cmpgt_epi32(hb, zero)));
     // Lanes with no rectangle or an invalid window read cell 0 (their cell is kLutCells).
     const __m256i validMask = _mm256_cmpgt_epi32(
         _mm256_setr_epi32(valid[idx[0]], valid[idx[1]], valid[idx[2]], valid[idx[3]], valid[idx[4]],
                           valid[idx[5]], valid[idx[6]], valid[idx[7]]),
         zero);
     const __m256i use = _mm256_and_si256(ok, validMask);
+    // Half sizes (1 on unused lanes: no division by zero). Products < 2^24: the float
+    // products are exact, as the scalar path's int ones.
+    const __m256 fwl = _mm256_cvtepi32_ps(select(use, wl, one));
+    const __m256 fwr = _mm256_cvtepi32_ps(select(use, wr, one));
+    const __m256 fht = _mm256_cvtepi32_ps(select(use, ht, one));
+    const __m256 fhb = _mm256_cvtepi32_ps(select(use, hb, one));
+    const __m256 fw = _mm256_add_ps(fwl, fwr), fh = _mm256_add_ps(fht, fhb);
     __m256 gx, gy;
     if (gray) {
-      const __m256i xm = _mm256_srai_epi32(_mm256_add_epi32(a, x1), 1);
-      const __m256i ym = _mm256_srai_epi32(_mm256_add_epi32(c, y1), 1);
-      const __m256i rrow[3] = {rowOff(c), rowOff(ym), rowOff(y1)};
-      const __m256i xcol[3] = {a, xm, x1};
+      const __m256i rrow[3] = {rowOff(py[0]), rowOff(py[1]), rowOff(py[2])};
       __m256i cc[9];
       for (int yy = 0; yy < 3; ++yy)
         for (int xx = 0; xx < 3; ++xx)
           cc[yy * 3 + xx] =
-              gather(t.gray, _mm256_and_si256(use, _mm256_add_epi32(rrow[yy], xcol[xx])));
+              gather(t.gray, _mm256_and_si256(use, _mm256_add_epi32(rrow[yy], px[xx])));
       // Quadrant sums (true sums < 2^31: the int32 conversion is the uint32 one).
       const auto quad = [](__m256i p, __m256i q, __m256i r, __m256i u) {
         return _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(_mm256_sub_epi32(p, q), r), u));
@@ -119,15 +124,17 @@ int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Bo
       const __m256 q1 = quad(cc[5], cc[4], cc[2], cc[1]);
       const __m256 q2 = quad(cc[7], cc[6], cc[4], cc[3]);
       const __m256 q3 = quad(cc[8], cc[7], cc[5], cc[4]);
-      const __m256 kk = _mm256_mul_ps(_mm256_set1_ps(2.f), invArea);
-      gx = _mm256_mul_ps(_mm256_sub_ps(_mm256_add_ps(q1, q3), _mm256_add_ps(q0, q2)), kk);
-      gy = _mm256_mul_ps(_mm256_sub_ps(_mm256_add_ps(q2, q3), _mm256_add_ps(q0, q1)), kk);
+      gx = _mm256_sub_ps(_mm256_div_ps(_mm256_add_ps(q1, q3), _mm256_mul_ps(fwr, fh)),
+                         _mm256_div_ps(_mm256_add_ps(q0, q2), _mm256_mul_ps(fwl, fh)));
+      gy = _mm256_sub_ps(_mm256_div_ps(_mm256_add_ps(q2, q3), _mm256_mul_ps(fhb, fw)),
+                         _mm256_div_ps(_mm256_add_ps(q0, q1), _mm256_mul_ps(fht, fw)));
     } else {
-      const __m256i r0 = rowOff(c), r1 = rowOff(y1);
-      const __m256i o[4] = {_mm256_and_si256(use, _mm256_add_epi32(r0, a)),
-                            _mm256_and_si256(use, _mm256_add_epi32(r0, x1)),
-                            _mm256_and_si256(use, _mm256_add_epi32(r1, a)),
-                            _mm256_and_si256(use, _mm256_add_epi32(r1, x1))};
+      const __m256 invArea = _mm256_div_ps(onePs, _mm256_mul_ps(fw, fh));
+      const __m256i r0 = rowOff(py[0]), r1 = rowOff(py[2]);
+      const __m256i o[4] = {_mm256_and_si256(use, _mm256_add_epi32(r0, px[0])),
+                            _mm256_and_si256(use, _mm256_add_epi32(r0, px[2])),
+                            _mm256_and_si256(use, _mm256_add_epi32(r1, px[0])),
+                            _mm256_and_si256(use, _mm256_add_epi32(r1, px[2]))};
       const auto rectOf = [&](const int32_t* tb) {
         // at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0)
         return _mm256_cvtepi32_ps(

@@ -1,5 +1,5 @@
 // aarch64 NEON cell coder (CellKernels.hpp): the SSE2 coder's lanes, each the scalar
-// path's IEEE operations (featureRect, evaluateKind, angleIndex, magIndexSq). aarch64
+// path's IEEE operations (gridEdge, responseAt, angleIndex, magIndexSq). aarch64
 // NEON arithmetic and division are IEEE, so it is bit-exact; armhf uses the scalar coder.
 #include "cuetrack/core/CellKernels.hpp"
 #if defined(CUETRACK_CELLK_NEON)
@@ -21,13 +21,20 @@ inline int32x4_t load4(int32_t a, int32_t b, int32_t c, int32_t d) {
 int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Box* wins,
               const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order) {
   if (kind == FeatureKind::Depth) return 0;
-  const float32x4_t fx = vdupq_n_f32(f.x), fy = vdupq_n_f32(f.y), fw = vdupq_n_f32(f.w),
-                    fh = vdupq_n_f32(f.h);
-  const float32x4_t ox = vdupq_n_f32(static_cast<float>(t.originX));
-  const float32x4_t oy = vdupq_n_f32(static_cast<float>(t.originY));
+  // The feature's cell edges, fractions of the window (Features.hpp: featureCells, gridEdge).
+  int cx[3], cy[3];
+  featureCells(f.x, f.w, cx);
+  featureCells(f.y, f.h, cy);
+  float32x4_t kx[3], ky[3];
+  for (int e = 0; e < 3; ++e) {
+    kx[e] = vdupq_n_f32(static_cast<float>(cx[e]) * (1.f / static_cast<float>(kGridCells)));
+    ky[e] = vdupq_n_f32(static_cast<float>(cy[e]) * (1.f / static_cast<float>(kGridCells)));
+  }
+  const float32x4_t orgX = vdupq_n_f32(static_cast<float>(t.originX));
+  const float32x4_t orgY = vdupq_n_f32(static_cast<float>(t.originY));
   const float32x4_t half = vdupq_n_f32(4096.5f);
-  const int32x4_t k4096 = vdupq_n_s32(4096), two = vdupq_n_s32(2), one = vdupq_n_s32(1);
-  const int32x4_t zero = vdupq_n_s32(0), notOne = vdupq_n_s32(~1);
+  const int32x4_t k4096 = vdupq_n_s32(4096), one = vdupq_n_s32(1);
+  const int32x4_t zero = vdupq_n_s32(0);
   const int32x4_t width = vdupq_n_s32(t.width), height = vdupq_n_s32(t.height);
   const float32x4_t zeroPs = vdupq_n_f32(0.f), onePs = vdupq_n_f32(1.f);
   const float minMag = binning(kind).minMag;
@@ -64,41 +71,37 @@ int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Bo
         vreinterpretq_f32_f64(vtrn2q_f64(vreinterpretq_f64_f32(t01l), vreinterpretq_f64_f32(t23l)));
     const float32x4_t wh =
         vreinterpretq_f32_f64(vtrn2q_f64(vreinterpretq_f64_f32(t01h), vreinterpretq_f64_f32(t23h)));
-    // featureRect
-    const float32x4_t fx0 = vsubq_f32(vaddq_f32(wx, vmulq_f32(fx, ww)), ox);
-    const float32x4_t fy0 = vsubq_f32(vaddq_f32(wy, vmulq_f32(fy, wh)), oy);
-    int32x4_t a = roundHalfUp(fx0);
-    int32x4_t b = roundHalfUp(vaddq_f32(fx0, vmulq_f32(fw, ww)));
-    int32x4_t c = roundHalfUp(fy0);
-    int32x4_t d = roundHalfUp(vaddq_f32(fy0, vmulq_f32(fh, wh)));
-    b = vmaxq_s32(b, vaddq_s32(a, two));
-    d = vmaxq_s32(d, vaddq_s32(c, two));
-    a = vmaxq_s32(a, zero);
-    c = vmaxq_s32(c, zero);
-    b = vminq_s32(b, width);
-    d = vminq_s32(d, height);
-    const int32x4_t bw = vsubq_s32(b, a), dh = vsubq_s32(d, c);
-    const uint32x4_t ok = vandq_u32(vcgtq_s32(bw, one), vcgtq_s32(dh, one));
-    const int32x4_t ew = vandq_s32(bw, notOne), eh = vandq_s32(dh, notOne);
-    const int32x4_t x1 = vaddq_s32(a, ew), y1 = vaddq_s32(c, eh);
-    // (x1 - x0) * (y1 - y0) < 2^24: the float product is exact, as the int one.
-    const float32x4_t area = vmulq_f32(vcvtq_f32_s32(ew), vcvtq_f32_s32(eh));
-    const float32x4_t invArea = vdivq_f32(onePs, area);
+    // gridEdge of each of the feature's edges, clipped to the tables.
+    const float32x4_t ox = vsubq_f32(wx, orgX), oy = vsubq_f32(wy, orgY);
+    int32x4_t px[3], py[3];
+    for (int e = 0; e < 3; ++e) {
+      px[e] = vminq_s32(vmaxq_s32(roundHalfUp(vaddq_f32(ox, vmulq_f32(kx[e], ww))), zero), width);
+      py[e] = vminq_s32(vmaxq_s32(roundHalfUp(vaddq_f32(oy, vmulq_f32(ky[e], wh))), zero), height);
+    }
+    // responseAt: every half non-empty.
+    const int32x4_t wl = vsubq_s32(px[1], px[0]), wr = vsubq_s32(px[2], px[1]);
+    const int32x4_t ht = vsubq_s32(py[1], py[0]), hb = vsubq_s32(py[2], py[1]);
+    const uint32x4_t ok = vandq_u32(vandq_u32(vcgtq_s32(wl, zero), vcgtq_s32(wr, zero)),
+                                    vandq_u32(vcgtq_s32(ht, zero), vcgtq_s32(hb, zero)));
     // Lanes with no rectangle or an invalid window read cell 0 (their cell is kLutCells).
     const uint32x4_t validMask =
         vcgtq_s32(load4(valid[idx[0]], valid[idx[1]], valid[idx[2]], valid[idx[3]]), zero);
     const uint32x4_t use = vandq_u32(ok, validMask);
     const int32x4_t useS = vreinterpretq_s32_u32(use);
+    // Half sizes (1 on unused lanes: no division by zero). Products < 2^24: the float
+    // products are exact, as the scalar path's int ones.
+    const float32x4_t fwl = vcvtq_f32_s32(vbslq_s32(use, wl, one));
+    const float32x4_t fwr = vcvtq_f32_s32(vbslq_s32(use, wr, one));
+    const float32x4_t fht = vcvtq_f32_s32(vbslq_s32(use, ht, one));
+    const float32x4_t fhb = vcvtq_f32_s32(vbslq_s32(use, hb, one));
+    const float32x4_t fw = vaddq_f32(fwl, fwr), fh = vaddq_f32(fht, fhb);
     float32x4_t gx, gy;
     if (gray) {
-      const int32x4_t xm = vshrq_n_s32(vaddq_s32(a, x1), 1);
-      const int32x4_t ym = vshrq_n_s32(vaddq_s32(c, y1), 1);
-      const int32x4_t rrow[3] = {rowOff(c), rowOff(ym), rowOff(y1)};
-      const int32x4_t xcol[3] = {a, xm, x1};
+      const int32x4_t rrow[3] = {rowOff(py[0]), rowOff(py[1]), rowOff(py[2])};
       int32_t o[9][4];
       for (int yy = 0; yy < 3; ++yy)
         for (int xx = 0; xx < 3; ++xx)
-          vst1q_s32(o[yy * 3 + xx], vandq_s32(useS, vaddq_s32(rrow[yy], xcol[xx])));
+          vst1q_s32(o[yy * 3 + xx], vandq_s32(useS, vaddq_s32(rrow[yy], px[xx])));
       const uint32_t* g = t.gray;
       uint32x4_t cc[9];
       for (int e = 0; e < 9; ++e) {
@@ -113,16 +116,18 @@ int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Bo
       const float32x4_t q1 = quad(cc[5], cc[4], cc[2], cc[1]);
       const float32x4_t q2 = quad(cc[7], cc[6], cc[4], cc[3]);
       const float32x4_t q3 = quad(cc[8], cc[7], cc[5], cc[4]);
-      const float32x4_t kk = vmulq_f32(vdupq_n_f32(2.f), invArea);
-      gx = vmulq_f32(vsubq_f32(vaddq_f32(q1, q3), vaddq_f32(q0, q2)), kk);
-      gy = vmulq_f32(vsubq_f32(vaddq_f32(q2, q3), vaddq_f32(q0, q1)), kk);
+      gx = vsubq_f32(vdivq_f32(vaddq_f32(q1, q3), vmulq_f32(fwr, fh)),
+                     vdivq_f32(vaddq_f32(q0, q2), vmulq_f32(fwl, fh)));
+      gy = vsubq_f32(vdivq_f32(vaddq_f32(q2, q3), vmulq_f32(fhb, fw)),
+                     vdivq_f32(vaddq_f32(q0, q1), vmulq_f32(fht, fw)));
     } else {
-      const int32x4_t r0 = rowOff(c), r1 = rowOff(y1);
+      const float32x4_t invArea = vdivq_f32(onePs, vmulq_f32(fw, fh));
+      const int32x4_t r0 = rowOff(py[0]), r1 = rowOff(py[2]);
       int32_t o[4][4];
-      vst1q_s32(o[0], vandq_s32(useS, vaddq_s32(r0, a)));
-      vst1q_s32(o[1], vandq_s32(useS, vaddq_s32(r0, x1)));
-      vst1q_s32(o[2], vandq_s32(useS, vaddq_s32(r1, a)));
-      vst1q_s32(o[3], vandq_s32(useS, vaddq_s32(r1, x1)));
+      vst1q_s32(o[0], vandq_s32(useS, vaddq_s32(r0, px[0])));
+      vst1q_s32(o[1], vandq_s32(useS, vaddq_s32(r0, px[2])));
+      vst1q_s32(o[2], vandq_s32(useS, vaddq_s32(r1, px[0])));
+      vst1q_s32(o[3], vandq_s32(useS, vaddq_s32(r1, px[2])));
       const auto rectOf = [&](const int32_t* tb) {
         int32x4_t v[4];
         for (int e = 0; e < 4; ++e)

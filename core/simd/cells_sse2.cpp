@@ -1,5 +1,5 @@
 // SSE2 cell coder (CellKernels.hpp): 4 windows per instruction, each lane the scalar
-// path's IEEE operations (featureRect, evaluateKind, angleIndex, magIndexSq).
+// path's IEEE operations (gridEdge, responseAt, angleIndex, magIndexSq).
 #include "cuetrack/core/CellKernels.hpp"
 #if defined(CUETRACK_CELLK_SSE2)
 #include <emmintrin.h>
@@ -29,13 +29,20 @@ inline __m128 selectPs(__m128 mask, __m128 a, __m128 b) {
 int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Box* wins,
               const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order) {
   if (kind == FeatureKind::Depth) return 0;
-  const __m128 fx = _mm_set1_ps(f.x), fy = _mm_set1_ps(f.y), fw = _mm_set1_ps(f.w),
-               fh = _mm_set1_ps(f.h);
-  const __m128 ox = _mm_set1_ps(static_cast<float>(t.originX));
-  const __m128 oy = _mm_set1_ps(static_cast<float>(t.originY));
+  // The feature's cell edges, fractions of the window (Features.hpp: featureCells, gridEdge).
+  int cx[3], cy[3];
+  featureCells(f.x, f.w, cx);
+  featureCells(f.y, f.h, cy);
+  __m128 kx[3], ky[3];
+  for (int e = 0; e < 3; ++e) {
+    kx[e] = _mm_set1_ps(static_cast<float>(cx[e]) * (1.f / static_cast<float>(kGridCells)));
+    ky[e] = _mm_set1_ps(static_cast<float>(cy[e]) * (1.f / static_cast<float>(kGridCells)));
+  }
+  const __m128 orgX = _mm_set1_ps(static_cast<float>(t.originX));
+  const __m128 orgY = _mm_set1_ps(static_cast<float>(t.originY));
   const __m128 half = _mm_set1_ps(4096.5f);
-  const __m128i k4096 = _mm_set1_epi32(4096), two = _mm_set1_epi32(2), one = _mm_set1_epi32(1);
-  const __m128i zero = _mm_setzero_si128(), notOne = _mm_set1_epi32(~1);
+  const __m128i k4096 = _mm_set1_epi32(4096), one = _mm_set1_epi32(1);
+  const __m128i zero = _mm_setzero_si128();
   const __m128i width = _mm_set1_epi32(t.width), height = _mm_set1_epi32(t.height);
   const __m128 zeroPs = _mm_setzero_ps();
   const __m128 signMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
@@ -52,32 +59,33 @@ int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Bo
     __m128 wx = _mm_loadu_ps(&wins[idx[0]].x), wy = _mm_loadu_ps(&wins[idx[1]].x),
            ww = _mm_loadu_ps(&wins[idx[2]].x), wh = _mm_loadu_ps(&wins[idx[3]].x);
     _MM_TRANSPOSE4_PS(wx, wy, ww, wh);
-    // featureRect
-    const __m128 fx0 = _mm_sub_ps(_mm_add_ps(wx, _mm_mul_ps(fx, ww)), ox);
-    const __m128 fy0 = _mm_sub_ps(_mm_add_ps(wy, _mm_mul_ps(fy, wh)), oy);
-    __m128i a = _mm_sub_epi32(_mm_cvttps_epi32(_mm_add_ps(fx0, half)), k4096);
-    __m128i b = _mm_sub_epi32(
-        _mm_cvttps_epi32(_mm_add_ps(_mm_add_ps(fx0, _mm_mul_ps(fw, ww)), half)), k4096);
-    __m128i c = _mm_sub_epi32(_mm_cvttps_epi32(_mm_add_ps(fy0, half)), k4096);
-    __m128i d = _mm_sub_epi32(
-        _mm_cvttps_epi32(_mm_add_ps(_mm_add_ps(fy0, _mm_mul_ps(fh, wh)), half)), k4096);
-    b = maxEpi32(b, _mm_add_epi32(a, two));
-    d = maxEpi32(d, _mm_add_epi32(c, two));
-    a = maxEpi32(a, zero);
-    c = maxEpi32(c, zero);
-    b = minEpi32(b, width);
-    d = minEpi32(d, height);
-    const __m128i bw = _mm_sub_epi32(b, a), dh = _mm_sub_epi32(d, c);
-    const __m128i ok = _mm_and_si128(_mm_cmpgt_epi32(bw, one), _mm_cmpgt_epi32(dh, one));
-    const __m128i ew = _mm_and_si128(bw, notOne), eh = _mm_and_si128(dh, notOne);
-    const __m128i x1 = _mm_add_epi32(a, ew), y1 = _mm_add_epi32(c, eh);
-    // (x1 - x0) * (y1 - y0) < 2^24: the float product is exact, as the int one.
-    const __m128 area = _mm_mul_ps(_mm_cvtepi32_ps(ew), _mm_cvtepi32_ps(eh));
-    const __m128 invArea = _mm_div_ps(_mm_set1_ps(1.f), area);
+    // gridEdge of each of the feature's edges, clipped to the tables.
+    const __m128 ox = _mm_sub_ps(wx, orgX), oy = _mm_sub_ps(wy, orgY);
+    const auto roundHalfUp = [&](__m128 v) {  // (int)(v + 4096.5f) - 4096
+      return _mm_sub_epi32(_mm_cvttps_epi32(_mm_add_ps(v, half)), k4096);
+    };
+    __m128i px[3], py[3];
+    for (int e = 0; e < 3; ++e) {
+      px[e] = minEpi32(maxEpi32(roundHalfUp(_mm_add_ps(ox, _mm_mul_ps(kx[e], ww))), zero), width);
+      py[e] = minEpi32(maxEpi32(roundHalfUp(_mm_add_ps(oy, _mm_mul_ps(ky[e], wh))), zero), height);
+    }
+    // responseAt: every half non-empty.
+    const __m128i wl = _mm_sub_epi32(px[1], px[0]), wr = _mm_sub_epi32(px[2], px[1]);
+    const __m128i ht = _mm_sub_epi32(py[1], py[0]), hb = _mm_sub_epi32(py[2], py[1]);
+    const __m128i ok =
+        _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi32(wl, zero), _mm_cmpgt_epi32(wr, zero)),
+                      _mm_and_si128(_mm_cmpgt_epi32(ht, zero), _mm_cmpgt_epi32(hb, zero)));
     // Lanes with no rectangle or an invalid window read cell 0 (their cell is kLutCells).
     const __m128i validMask = _mm_cmpgt_epi32(
         _mm_setr_epi32(valid[idx[0]], valid[idx[1]], valid[idx[2]], valid[idx[3]]), zero);
     const __m128i use = _mm_and_si128(ok, validMask);
+    // Half sizes (1 on unused lanes: no division by zero). Products < 2^24: the float
+    // products are exact, as the scalar path's int ones.
+    const __m128 fwl = _mm_cvtepi32_ps(selectEpi32(use, wl, one));
+    const __m128 fwr = _mm_cvtepi32_ps(selectEpi32(use, wr, one));
+    const __m128 fht = _mm_cvtepi32_ps(selectEpi32(use, ht, one));
+    const __m128 fhb = _mm_cvtepi32_ps(selectEpi32(use, hb, one));
+    const __m128 fw = _mm_add_ps(fwl, fwr), fh = _mm_add_ps(fht, fhb);
     // Row offsets y * stride (< 2^24: exact in float).
     const __m128 strideF = _mm_set1_ps(static_cast<float>(stride));
     const auto rowOff = [&](__m128i y) {
@@ -87,16 +95,12 @@ int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Bo
     _mm_store_si128(reinterpret_cast<__m128i*>(okv), use);
     __m128 gx, gy;
     if (gray) {
-      const __m128i xm = _mm_srai_epi32(_mm_add_epi32(a, x1), 1);
-      const __m128i ym = _mm_srai_epi32(_mm_add_epi32(c, y1), 1);
-      const __m128i r0 = rowOff(c), r1 = rowOff(ym), r2 = rowOff(y1);
+      const __m128i rrow[3] = {rowOff(py[0]), rowOff(py[1]), rowOff(py[2])};
       alignas(16) int o[9][4];
-      const __m128i xcol[3] = {a, xm, x1};
-      const __m128i rrow[3] = {r0, r1, r2};
       for (int yy = 0; yy < 3; ++yy)
         for (int xx = 0; xx < 3; ++xx)
           _mm_store_si128(reinterpret_cast<__m128i*>(o[yy * 3 + xx]),
-                          _mm_and_si128(use, _mm_add_epi32(rrow[yy], xcol[xx])));
+                          _mm_and_si128(use, _mm_add_epi32(rrow[yy], px[xx])));
       const uint32_t* g = t.gray;
       __m128i cc[9];
       for (int e = 0; e < 9; ++e)
@@ -110,16 +114,22 @@ int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Bo
       const __m128 q1 = quad(cc[5], cc[4], cc[2], cc[1]);
       const __m128 q2 = quad(cc[7], cc[6], cc[4], cc[3]);
       const __m128 q3 = quad(cc[8], cc[7], cc[5], cc[4]);
-      const __m128 kk = _mm_mul_ps(_mm_set1_ps(2.f), invArea);
-      gx = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(q1, q3), _mm_add_ps(q0, q2)), kk);
-      gy = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(q2, q3), _mm_add_ps(q0, q1)), kk);
+      gx = _mm_sub_ps(_mm_div_ps(_mm_add_ps(q1, q3), _mm_mul_ps(fwr, fh)),
+                      _mm_div_ps(_mm_add_ps(q0, q2), _mm_mul_ps(fwl, fh)));
+      gy = _mm_sub_ps(_mm_div_ps(_mm_add_ps(q2, q3), _mm_mul_ps(fhb, fw)),
+                      _mm_div_ps(_mm_add_ps(q0, q1), _mm_mul_ps(fht, fw)));
     } else {
-      const __m128i r0 = rowOff(c), r1 = rowOff(y1);
+      const __m128 invArea = _mm_div_ps(_mm_set1_ps(1.f), _mm_mul_ps(fw, fh));
+      const __m128i r0 = rowOff(py[0]), r1 = rowOff(py[2]);
       alignas(16) int o[4][4];
-      _mm_store_si128(reinterpret_cast<__m128i*>(o[0]), _mm_and_si128(use, _mm_add_epi32(r0, a)));
-      _mm_store_si128(reinterpret_cast<__m128i*>(o[1]), _mm_and_si128(use, _mm_add_epi32(r0, x1)));
-      _mm_store_si128(reinterpret_cast<__m128i*>(o[2]), _mm_and_si128(use, _mm_add_epi32(r1, a)));
-      _mm_store_si128(reinterpret_cast<__m128i*>(o[3]), _mm_and_si128(use, _mm_add_epi32(r1, x1)));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[0]),
+                      _mm_and_si128(use, _mm_add_epi32(r0, px[0])));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[1]),
+                      _mm_and_si128(use, _mm_add_epi32(r0, px[2])));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[2]),
+                      _mm_and_si128(use, _mm_add_epi32(r1, px[0])));
+      _mm_store_si128(reinterpret_cast<__m128i*>(o[3]),
+                      _mm_and_si128(use, _mm_add_epi32(r1, px[2])));
       const auto rectOf = [&](const int32_t* tb) {
         __m128i v[4];
         for (int e = 0; e < 4; ++e)

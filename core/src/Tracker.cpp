@@ -222,7 +222,7 @@ Particle Tracker::searchParticle(bool wide) {
 }
 
 bool Tracker::grayTemplate(const Box& win, float* out) {
-  // Mean grey of each of kPatchSize^2 cells (the cell edges of extractPatch), grey only:
+  // Mean grey of each of kPatchSize^2 cells of the window (each at least one pixel), grey only:
   // 25 windows a frame, so the other channels are not worth reading.
   const FrameTables t = _channels.tables();
   int xs[kPatchSize + 1], ys[kPatchSize + 1];

@@ -83,22 +83,37 @@ TEST_CASE("gray, depth and colour features match brute force on frames", "[core]
       const Box win{static_cast<float>(roi.x0) + r.uniform(0.f, 8.f),
                     static_cast<float>(roi.y0) + r.uniform(0.f, 6.f), r.uniform(12.f, 30.f),
                     r.uniform(12.f, 28.f)};
-      // The same rounding the feature uses, in frame coordinates.
-      const int x0 = fmath::roundToInt(win.x + f.x * win.w);
-      int x1 = fmath::roundToInt(win.x + f.x * win.w + f.w * win.w);
-      const int y0 = fmath::roundToInt(win.y + f.y * win.h);
-      int y1 = fmath::roundToInt(win.y + f.y * win.h + f.h * win.h);
-      x1 = x0 + ((x1 - x0) & ~1);  // even sizes: equal halves
-      y1 = y0 + ((y1 - y0) & ~1);
+      // The feature's edges: cell edges of the window's 32x32 grid (Features.hpp), each on
+      // the pixel nearest to it; checked against the plain formula, then used.
+      int cx[3], cy[3];
+      featureCells(f.x, f.w, cx);
+      featureCells(f.y, f.h, cy);
+      REQUIRE(cx[2] - cx[0] >= 2);
+      REQUIRE((cx[2] - cx[0]) % 2 == 0);
+      REQUIRE(cx[1] * 2 == cx[0] + cx[2]);
+      REQUIRE(std::abs(cx[0] - 32.0 * f.x) <= 0.5 + 1e-4);
+      REQUIRE(std::abs(cx[2] - 32.0 * (f.x + f.w)) <= 1.5 + 1e-4);  // evened
+      int e[3], g[3];
+      for (int i = 0; i < 3; ++i) {
+        e[i] = gridEdge(win.x - static_cast<float>(t.originX), win.w, cx[i], t.width) + t.originX;
+        g[i] = gridEdge(win.y - static_cast<float>(t.originY), win.h, cy[i], t.height) + t.originY;
+        REQUIRE(std::abs(e[i] - (win.x + cx[i] / 32.0 * win.w)) <= 0.5 + 1e-3);
+        REQUIRE(std::abs(g[i] - (win.y + cy[i] / 32.0 * win.h)) <= 0.5 + 1e-3);
+      }
+      const int x0 = e[0], xm = e[1], x1 = e[2], y0 = g[0], ym = g[1], y1 = g[2];
       REQUIRE(x1 <= roi.x1);
       REQUIRE(y1 <= roi.y1);
-      const int xm = (x0 + x1) / 2, ym = (y0 + y1) / 2;
+      if (xm == x0 || x1 == xm || ym == y0 || y1 == ym) {  // an empty half: no measurement
+        REQUIRE_FALSE(evaluate(f, win, t).valid);
+        continue;
+      }
       const Response resp = evaluate(f, win, t);
       double gx = 0, gy = 0;
       bool valid = true;
       if (f.kind == FeatureKind::Gray) {
         gx = meanGray(im, xm, y0, x1, y1) - meanGray(im, x0, y0, xm, y1);
-        gy = meanGray(im, x0, ym, x1, y1) - meanGray(im, x0, y0, x1, ym);
+        gy = meanGray(im, x0, ym, x1, y1) -
+             meanGray(im, x0, y0, x1, ym);  // halves may differ by 1 px
       } else if (f.kind == FeatureKind::Depth) {
         double l, rr, tt, b;
         valid = meanDepth(im, x0, y0, xm, y1, &l) & meanDepth(im, xm, y0, x1, y1, &rr) &
@@ -167,28 +182,44 @@ TEST_CASE("a frame without depth gives no depth measurement", "[core][features]"
 }
 
 TEST_CASE("features answer the same on an example patch as on the frame", "[core][features]") {
-  // A 32x32 window maps one pixel per patch cell: the patch is then exact.
+  // A patch keeps the frame's sums at the window's cell edges: every feature, on windows
+  // smaller and larger than the 32x32 grid, clipped by the tables' border or not, and
+  // with an ROI origin, reads the same pixels on both: the same response, bit for bit.
   static TestImage im;
   fill(im, 21, true);
-  channels.compute(im.frame(), PixelRect{0, 0, W, H}, true);
-  const Box win{7.f, 5.f, 32.f, 32.f};
   static ExamplePatch patch;
-  extractPatch(channels.tables(), win, &patch);
+  const PixelRect rois[2] = {{0, 0, W, H}, {3, 2, W - 1, H}};
   Rng r(2);
-  for (int trial = 0; trial < 200; ++trial) {
-    Feature f;
-    f.w = r.uniform(0.15f, 0.9f);
-    f.h = r.uniform(0.15f, 0.9f);
-    f.x = r.uniform(0.f, 1.f - f.w);
-    f.y = r.uniform(0.f, 1.f - f.h);
-    f.kind = static_cast<FeatureKind>(trial % 3);
-    const Response a = evaluate(f, win, channels.tables());
-    const Response b = evaluate(f, ExamplePatch::window(), patch.tables());
-    REQUIRE(a.valid == b.valid);
-    if (!a.valid) continue;
-    REQUIRE(b.mag() == Approx(a.mag()).margin(2e-2 + 1e-3 * a.mag()));
+  int compared = 0, invalid = 0;
+  for (const PixelRect& roi : rois) {
+    channels.compute(im.frame(), roi, true);
+    for (int trial = 0; trial < 300; ++trial) {
+      const Box win{r.uniform(-6.f, 30.f), r.uniform(-6.f, 24.f), r.uniform(10.f, 60.f),
+                    r.uniform(10.f, 50.f)};
+      extractPatch(channels.tables(), win, &patch);
+      for (int k = 0; k < 6; ++k) {
+        Feature f;
+        f.w = r.uniform(0.05f, 0.9f);
+        f.h = r.uniform(0.05f, 0.9f);
+        f.x = r.uniform(0.f, 1.f - f.w);
+        f.y = r.uniform(0.f, 1.f - f.h);
+        f.kind = static_cast<FeatureKind>(k % 3);
+        const Response a = evaluate(f, win, channels.tables());
+        const Response b = evaluate(f, patch.view());
+        REQUIRE(a.valid == b.valid);
+        if (!a.valid) {
+          ++invalid;
+          continue;
+        }
+        REQUIRE(a.x == b.x);
+        REQUIRE(a.y == b.y);
+        ++compared;
+      }
+    }
   }
-  // A larger window is area-averaged: gradients of a smooth ramp keep their value.
+  REQUIRE(compared > 2000);  // most are measurements...
+  REQUIRE(invalid > 20);     // ...and the empty-half cases are exercised too
+  // A ramp: the gradient is the difference of the halves' means, on the patch as on the frame.
   static TestImage ramp;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
@@ -201,7 +232,8 @@ TEST_CASE("features answer the same on an example patch as on the frame", "[core
   Feature g;
   g.kind = FeatureKind::Gray;
   const Response onFrame = evaluate(g, Box{0.f, 0.f, 48.f, 40.f}, channels.tables());
-  const Response onPatch = evaluate(g, ExamplePatch::window(), patch.tables());
-  REQUIRE(onPatch.mag() == Approx(onFrame.mag()).epsilon(0.06));
-  REQUIRE(onFrame.angle() < 0.05f);  // brightening to the right: angle 0
+  const Response onPatch = evaluate(g, patch.view());
+  REQUIRE(onPatch.x == onFrame.x);
+  REQUIRE(onFrame.mag() == Approx(4.0 * 24).epsilon(0.06));  // 4 grey levels a pixel, 24 px apart
+  REQUIRE(onFrame.angle() < 0.05f);                          // brightening to the right: angle 0
 }

@@ -14,9 +14,9 @@ using namespace cuetrack;
 
 namespace {
 // FNV-1a of boxes and confidences over 11 updates (see the golden test below).
-constexpr uint64_t kGolden21 = 2391283431600941037ULL;
-constexpr uint64_t kGolden11 = 14411755642189564529ULL;
-constexpr uint64_t kGoldenBest = 8931446187252691778ULL;
+constexpr uint64_t kGolden21 = 7084889920629118572ULL;
+constexpr uint64_t kGolden11 = 435749363550806036ULL;
+constexpr uint64_t kGoldenBest = 16802377362304798482ULL;
 
 Tracker tracker;  // large: static storage
 test::MovingSquare scene;
@@ -190,38 +190,6 @@ TEST_CASE("reset returns to idle and keeps the configuration", "[core][tracker]"
   const TrackResult r = tracker.update(small);
   REQUIRE(r.state == TrackState::Tracking);
   REQUIRE(r.box.w == Approx(48.f));
-}
-
-// Mean |ln(w / 48)| + |ln(h / 48)| of the reported box over 150 updates on a still frame.
-static double meanSizeError(bool anchor, uint64_t seed) {
-  TrackerConfig cfg = presetConfig(Preset::Test1_1);
-  cfg.scaleAnchor2d = anchor;
-  tracker.configure(cfg, seed);
-  const Frame f = scene.render(0, false);
-  REQUIRE(tracker.init(f, scene.truth(0)) == InitError::None);
-  double err = 0.0;
-  constexpr int kFrames = 150;
-  for (int t = 1; t <= kFrames; ++t) {
-    Frame ft = f;
-    ft.timeUs = static_cast<uint64_t>(t) * 33333u;
-    const TrackResult r = tracker.update(ft);
-    REQUIRE(r.box.w > 0.f);
-    err += std::fabs(std::log(r.box.w / 48.0)) + std::fabs(std::log(r.box.h / 48.0));
-  }
-  return err / kFrames;
-}
-
-TEST_CASE("the 2D scale anchor holds a still target's size", "[core][tracker]") {
-  // Without it the size random-walks with the learnt positives (docs/algorithm.md); the
-  // same seeds with the anchor must drift less, and stay within a few percent.
-  double on = 0.0, off = 0.0;
-  for (uint64_t seed = 1; seed <= 3; ++seed) {
-    on += meanSizeError(true, seed);
-    off += meanSizeError(false, seed);
-  }
-  INFO("mean |ln size error| with the anchor " << on / 3 << ", without " << off / 3);
-  CHECK(on < off);
-  CHECK(on / 3 < 0.05);
 }
 
 TEST_CASE("best's measured size keeps a box that includes parts depth misses", "[core][tracker]") {

@@ -37,7 +37,7 @@ inline constexpr int kMaxPoolFeatures = 256;
 inline constexpr std::size_t kTrackerBudgetBytes = 16u * 1024u * 1024u;
 // The big buffers (each also static_asserted next to its owner):
 //   integral tables    5 x 641 x 481 x 4 B             = 6,166,420 B (IntegralChannels)
-//   example patches    140 x 5 x 33 x 33 x 4 B         = 3,049,200 B (TrainingSet)
+//   example patches    140 x (5 x 33^2 x 4 + 132) B    = 3,067,680 B (TrainingSet)
 //   response cache     256 x 140 x 20 B                =   716,800 B (ResponseCache)
 //   weak classifiers   32 x (32 x 40 + 2) x 4 B        ~   164,100 B (StrongClassifier)
 //   particles          2 x 2000 x 32 B + 2000 x 4 B    =   136,000 B (ParticleFilter)
@@ -45,11 +45,12 @@ inline constexpr std::size_t kTrackerBudgetBytes = 16u * 1024u * 1024u;
 //   table cells per distinct feature 32 x 2000 x 2 B   =   128,000 B (StrongClassifier)
 //   total                                              ~10.5 MB < 16 MiB (16,777,216 B)
 inline constexpr std::size_t kIntegralBytes = 5u * kMaxIntegralCells * 4u;
-inline constexpr std::size_t kPatchBytes = std::size_t{kMaxTrainingExamples} * 5u * 33u * 33u * 4u;
+inline constexpr std::size_t kPatchBytes =
+    std::size_t{kMaxTrainingExamples} * (5u * 33u * 33u * 4u + 2u * 33u * 2u);
 inline constexpr std::size_t kCacheBytes =
     std::size_t{kMaxPoolFeatures} * kMaxTrainingExamples * 20u;
 static_assert(kIntegralBytes == 6166420u, "integral tables: 5 x 641 x 481 x 4 B");
-static_assert(kPatchBytes == 3049200u, "example patches: 140 x 5 x 33^2 x 4 B");
+static_assert(kPatchBytes == 3067680u, "example patches: 140 x (5 x 33^2 x 4 + 2 x 33 x 2) B");
 static_assert(kCacheBytes == 716800u, "response cache: 256 x 140 x 20 B");
 static_assert(kIntegralBytes + kPatchBytes + kCacheBytes + 400000u < kTrackerBudgetBytes,
               "the tracker's big buffers must fit the 16 MiB budget");

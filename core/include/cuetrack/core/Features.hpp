@@ -50,7 +50,6 @@ struct ChannelTables {
 };
 
 using FrameTables = ChannelTables<uint32_t, int32_t>;
-using PatchTables = ChannelTables<float, float>;
 
 namespace detail {
 
@@ -83,30 +82,42 @@ inline float rect(const T* t, int stride, int x0, int y0, int x1, int y1) {
 
 }  // namespace detail
 
-// Pixel rectangle [x0, x1) x [y0, y1) of feature f in window `win` (frame px), in the
-// tables' own coordinates and clipped to them, with an even width and height so the
-// halves are equal. False when less than 2x2 px remain (a gradient needs two halves).
-template <typename U, typename S>
-inline bool featureRect(const Feature& f, const Box& win, const ChannelTables<U, S>& t, int* x0,
-                        int* y0, int* x1, int* y1) {
-  const float fx0 = win.x + f.x * win.w - static_cast<float>(t.originX);
-  const float fy0 = win.y + f.y * win.h - static_cast<float>(t.originY);
-  // Round half up without a branch (valid above -4096 px).
-  int a = static_cast<int>(fx0 + 4096.5f) - 4096;
-  int b = static_cast<int>(fx0 + f.w * win.w + 4096.5f) - 4096;
-  int c = static_cast<int>(fy0 + 4096.5f) - 4096;
-  int d = static_cast<int>(fy0 + f.h * win.h + 4096.5f) - 4096;
-  if (b < a + 2) b = a + 2;  // tiny windows: at least two pixels per axis
-  if (d < c + 2) d = c + 2;
+// The grid a feature is placed on. A window is cut into kGridCells x kGridCells cells,
+// the cells of an example patch (TrainingSet.hpp). A feature's rectangle, and the line
+// splitting it into halves, lie on cell edges, and a cell edge lies on the pixel nearest
+// to it. So a feature reads the very same pixels whether it is evaluated on the frame or
+// on the example patch kept of that window, and the two answers are bit for bit equal:
+// the classifier is trained on exactly what it is later asked (docs/algorithm.md).
+inline constexpr int kGridCells = 32;
+
+// Round half up without a branch (valid above -4096).
+inline int roundHalfUp(float v) {
+  return static_cast<int>(v + 4096.5f) - 4096;
+}
+
+// Cell edges [c[0], c[2]) of a feature's extent (pos, len) along one axis, split at c[1]:
+// at least two cells, an even count, inside [0, kGridCells].
+inline void featureCells(float pos, float len, int c[3]) {
+  constexpr float g = static_cast<float>(kGridCells);
+  int a = roundHalfUp(pos * g);
+  int b = roundHalfUp((pos + len) * g);
   if (a < 0) a = 0;
-  if (c < 0) c = 0;
-  if (b > t.width) b = t.width;
-  if (d > t.height) d = t.height;
-  *x0 = a;
-  *y0 = c;
-  *x1 = a + ((b - a) & ~1);
-  *y1 = c + ((d - c) & ~1);
-  return b - a >= 2 && d - c >= 2;
+  if (a > kGridCells - 2) a = kGridCells - 2;
+  if (b < a + 2) b = a + 2;
+  if (b > kGridCells) b = kGridCells;
+  b = a + ((b - a) & ~1);
+  c[0] = a;
+  c[1] = (a + b) >> 1;
+  c[2] = b;
+}
+
+// Table coordinate of cell edge k of a window starting at `origin` (window start minus
+// the table's origin) of `size` pixels, clipped to [0, limit]. The SIMD cell coders
+// repeat these operations in this order.
+inline int gridEdge(float origin, float size, int k, int limit) {
+  const float kf = static_cast<float>(k) * (1.f / static_cast<float>(kGridCells));
+  const int e = roundHalfUp(origin + kf * size);
+  return e < 0 ? 0 : (e > limit ? limit : e);
 }
 
 inline Response vec(float x, float y) {
@@ -117,38 +128,89 @@ inline Response vec(float x, float y) {
   return r;
 }
 
-// The response of a feature of kind K on the window `win` (frame px for frames; the
-// patch's own [0, size]^2 for examples).
+// The response of kind K from the tables read at columns ix[3] and rows iy[3] (the
+// feature's edges in table coordinates), with px[3], py[3] the same edges in pixels (the
+// halves' sizes). Invalid when a half is empty (a window smaller than the grid, or
+// clipped by the tables' border).
 template <FeatureKind K, typename U, typename S>
-inline Response evaluateKind(const Feature& f, const Box& win, const ChannelTables<U, S>& t) {
-  int x0, y0, x1, y1;
-  if (!featureRect(f, win, t, &x0, &y0, &x1, &y1)) return Response{};
-  const float area = static_cast<float>((x1 - x0) * (y1 - y0));
-  const float invArea = 1.f / area;
+inline Response responseAt(const ChannelTables<U, S>& t, const int ix[3], const int iy[3],
+                           const int px[3], const int py[3]) {
+  const int wl = px[1] - px[0], wr = px[2] - px[1];
+  const int ht = py[1] - py[0], hb = py[2] - py[1];
+  if (wl <= 0 || wr <= 0 || ht <= 0 || hb <= 0) return Response{};
+  const int w = wl + wr, h = ht + hb;
+  // Areas <= 640 x 480 < 2^24: exact in float.
   if constexpr (K == FeatureKind::Colour) {
-    const float a2 = detail::rect(t.alpha2, t.stride, x0, y0, x1, y1);
-    const float b = detail::rect(t.beta, t.stride, x0, y0, x1, y1);
+    const float invArea = 1.f / static_cast<float>(w * h);
+    const float a2 = detail::rect(t.alpha2, t.stride, ix[0], iy[0], ix[2], iy[2]);
+    const float b = detail::rect(t.beta, t.stride, ix[0], iy[0], ix[2], iy[2]);
     return vec(0.5f * a2 * invArea, 0.866025404f * b * invArea);
   }
-  const int xs[3] = {x0, (x0 + x1) >> 1, x1};
-  const int ys[3] = {y0, (y0 + y1) >> 1, y1};
   float q[4];
   if constexpr (K == FeatureKind::Gray) {
-    // Equal halves: mean(right) - mean(left) = (R - L) / (A / 2).
-    detail::quadrants(t.gray, t.stride, xs, ys, q);
-    const float k = 2.f * invArea;
-    return vec(((q[1] + q[3]) - (q[0] + q[2])) * k, ((q[2] + q[3]) - (q[0] + q[1])) * k);
+    // mean(right) - mean(left), mean(bottom) - mean(top).
+    detail::quadrants(t.gray, t.stride, ix, iy, q);
+    return vec(
+        (q[1] + q[3]) / static_cast<float>(wr * h) - (q[0] + q[2]) / static_cast<float>(wl * h),
+        (q[2] + q[3]) / static_cast<float>(hb * w) - (q[0] + q[1]) / static_cast<float>(ht * w));
   }
   // Depth: means over valid pixels only; a half that is less than half valid is no
   // measurement, so holes (0 mm) never make a gradient.
   float n[4];
-  detail::quadrants(t.depth, t.stride, xs, ys, q);
-  detail::quadrants(t.count, t.stride, xs, ys, n);
+  detail::quadrants(t.depth, t.stride, ix, iy, q);
+  detail::quadrants(t.count, t.stride, ix, iy, n);
   const float nl = n[0] + n[2], nr = n[1] + n[3], nt = n[0] + n[1], nb = n[2] + n[3];
-  const float minValid = 0.25f * area;  // half of a half
-  if (nl < minValid || nr < minValid || nt < minValid || nb < minValid) return Response{};
+  if (2.f * nl < static_cast<float>(wl * h) || 2.f * nr < static_cast<float>(wr * h) ||
+      2.f * nt < static_cast<float>(ht * w) || 2.f * nb < static_cast<float>(hb * w))
+    return Response{};
   const float l = q[0] + q[2], r = q[1] + q[3], tp = q[0] + q[1], bt = q[2] + q[3];
   return vec((r * nl - l * nr) / (nl * nr), (bt * nt - tp * nb) / (nt * nb));
+}
+
+// The response of a feature of kind K on the window `win` (frame px) of frame tables.
+template <FeatureKind K, typename U, typename S>
+inline Response evaluateKind(const Feature& f, const Box& win, const ChannelTables<U, S>& t) {
+  int cx[3], cy[3];
+  featureCells(f.x, f.w, cx);
+  featureCells(f.y, f.h, cy);
+  const float ox = win.x - static_cast<float>(t.originX);
+  const float oy = win.y - static_cast<float>(t.originY);
+  int px[3], py[3];
+  for (int i = 0; i < 3; ++i) {
+    px[i] = gridEdge(ox, win.w, cx[i], t.width);
+    py[i] = gridEdge(oy, win.h, cy[i], t.height);
+  }
+  return responseAt<K>(t, px, py, px, py);
+}
+
+// An example patch's tables: integral tables over the grid's cells (cell (i, j) sums
+// the pixels of cells [0, i) x [0, j)), and each cell edge's pixel coordinate.
+struct PatchView {
+  FrameTables t;                   // stride kGridCells + 1, width = height = kGridCells
+  const int16_t* edgeX = nullptr;  // kGridCells + 1 pixel columns
+  const int16_t* edgeY = nullptr;  // kGridCells + 1 pixel rows
+};
+
+template <FeatureKind K>
+inline Response evaluateKind(const Feature& f, const PatchView& p) {
+  int cx[3], cy[3];
+  featureCells(f.x, f.w, cx);
+  featureCells(f.y, f.h, cy);
+  const int px[3] = {p.edgeX[cx[0]], p.edgeX[cx[1]], p.edgeX[cx[2]]};
+  const int py[3] = {p.edgeY[cy[0]], p.edgeY[cy[1]], p.edgeY[cy[2]]};
+  return responseAt<K>(p.t, cx, cy, px, py);
+}
+
+inline Response evaluate(const Feature& f, const PatchView& p) {
+  switch (f.kind) {
+    case FeatureKind::Gray:
+      return evaluateKind<FeatureKind::Gray>(f, p);
+    case FeatureKind::Depth:
+      return evaluateKind<FeatureKind::Depth>(f, p);
+    case FeatureKind::Colour:
+      break;
+  }
+  return evaluateKind<FeatureKind::Colour>(f, p);
 }
 
 template <typename U, typename S>

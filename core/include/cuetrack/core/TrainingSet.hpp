@@ -1,11 +1,11 @@
 // The observation model's training set: up to kMaxTrainingExamples labelled
-// windows. Each example is kept as a 32x32 scale-normalised patch of every cue
-// (area averages of the frame's integral tables) with its own small integral
-// tables, so any feature, including one sampled later, is evaluated on an old
-// example exactly as on a frame (rectangle means). Slot 0 holds the first
-// positive (an anchor against drift); the other positives and the negatives are
-// two FIFOs. ResponseCache keeps every pool feature's coded response on every
-// example, so a training step only codes what changed.
+// windows. Each example is kept as the frame's integral tables sampled at the
+// window's 33x33 cell edges (Features.hpp's grid), with those edges' pixel
+// coordinates, so any feature, including one sampled later, reads the same pixel
+// sums on an old example as it read on the frame: the same answer, bit for bit. Slot 0 holds the
+// first positive (an anchor against drift); the other positives and the negatives are two FIFOs.
+// ResponseCache keeps every pool feature's coded response on every example, so a training step only
+// codes what changed.
 #pragma once
 
 #include <cstdint>
@@ -17,23 +17,23 @@
 
 namespace cuetrack {
 
-inline constexpr int kPatchSize = 32;                // cells per side
+inline constexpr int kPatchSize = kGridCells;        // cells per side
 inline constexpr int kPatchStride = kPatchSize + 1;  // table cells per row
 inline constexpr int kPatchCells = kPatchStride * kPatchStride;
 
 struct ExamplePatch {
-  float gray[kPatchCells];
-  float alpha2[kPatchCells];
-  float beta[kPatchCells];
-  float depth[kPatchCells];  // sum of valid depth per cell / cell area [mm]
-  float count[kPatchCells];  // valid fraction per cell
-  PatchTables tables() const;
-  static Box window() {
-    return Box{0.f, 0.f, static_cast<float>(kPatchSize), static_cast<float>(kPatchSize)};
-  }
+  // Integral tables over cells: entry (i, j) sums the pixels of cells [0, i) x [0, j).
+  uint32_t gray[kPatchCells];
+  int32_t alpha2[kPatchCells];
+  int32_t beta[kPatchCells];
+  uint32_t depth[kPatchCells];  // [mm], over valid pixels
+  uint32_t count[kPatchCells];  // valid depth pixels
+  int16_t edgeX[kPatchStride];  // pixel column of each cell edge (any common origin)
+  int16_t edgeY[kPatchStride];  // pixel row of each cell edge
+  PatchView view() const;
 };
 
-// Area-averages window `win` (frame px) of the tables into a patch and integrates it.
+// Samples the tables at the cell edges of window `win` (frame px) into a patch.
 void extractPatch(const FrameTables& t, const Box& win, ExamplePatch* out);
 
 class TrainingSet {
@@ -63,8 +63,9 @@ class TrainingSet {
   int _nextPos = 0;  // next FIFO slot for positives, in [_anchors, _posCapacity)
   int _nextNeg = 0;  // next FIFO slot for negatives, in [_posCapacity, _capacity)
 };
-// 140 examples x 5 channels x 33^2 cells x 4 B = 3,049,200 B.
-static_assert(sizeof(ExamplePatch) == 5u * kPatchCells * 4u, "patch: 5 x 33 x 33 floats");
+// 140 examples x (5 channels x 33^2 cells x 4 B + 2 x 33 edges x 2 B) = 3,067,680 B.
+static_assert(sizeof(ExamplePatch) == 5u * kPatchCells * 4u + 2u * kPatchStride * 2u,
+              "patch: 5 x 33 x 33 x 4 B tables + 2 x 33 x 2 B edges");
 
 class ResponseCache {
  public:
