@@ -63,6 +63,17 @@ bool meanDepth(const TestImage& im, int x0, int y0, int x1, int y1, double* out)
 
 static IntegralChannels channels;  // large: static storage
 
+// A feature of kind k with sides in [minSide, maxSide) placed at random inside [0,1]^2.
+Feature randomFeature(Rng& r, float minSide, float maxSide, FeatureKind k) {
+  Feature f;
+  f.w = r.uniform(minSide, maxSide);
+  f.h = r.uniform(minSide, maxSide);
+  f.x = r.uniform(0.f, 1.f - f.w);
+  f.y = r.uniform(0.f, 1.f - f.h);
+  f.kind = k;
+  return f;
+}
+
 }  // namespace
 
 TEST_CASE("gray, depth and colour features match brute force on frames", "[core][features]") {
@@ -74,12 +85,7 @@ TEST_CASE("gray, depth and colour features match brute force on frames", "[core]
     const FrameTables& t = channels.tables();
     Rng r(11);
     for (int trial = 0; trial < 300; ++trial) {
-      Feature f;
-      f.w = r.uniform(0.2f, 0.8f);
-      f.h = r.uniform(0.2f, 0.8f);
-      f.x = r.uniform(0.f, 1.f - f.w);
-      f.y = r.uniform(0.f, 1.f - f.h);
-      f.kind = static_cast<FeatureKind>(trial % 3);
+      const Feature f = randomFeature(r, 0.2f, 0.8f, static_cast<FeatureKind>(trial % 3));
       const Box win{static_cast<float>(roi.x0) + r.uniform(0.f, 8.f),
                     static_cast<float>(roi.y0) + r.uniform(0.f, 6.f), r.uniform(12.f, 30.f),
                     r.uniform(12.f, 28.f)};
@@ -198,12 +204,7 @@ TEST_CASE("features answer the same on an example patch as on the frame", "[core
                     r.uniform(10.f, 50.f)};
       extractPatch(channels.tables(), win, &patch);
       for (int k = 0; k < 6; ++k) {
-        Feature f;
-        f.w = r.uniform(0.05f, 0.9f);
-        f.h = r.uniform(0.05f, 0.9f);
-        f.x = r.uniform(0.f, 1.f - f.w);
-        f.y = r.uniform(0.f, 1.f - f.h);
-        f.kind = static_cast<FeatureKind>(k % 3);
+        const Feature f = randomFeature(r, 0.05f, 0.9f, static_cast<FeatureKind>(k % 3));
         const Response a = evaluate(f, win, channels.tables());
         const Response b = evaluate(f, patch.view());
         REQUIRE(a.valid == b.valid);
