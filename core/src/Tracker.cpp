@@ -310,15 +310,23 @@ void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
     const float maxOverlap = near ? _config.nearNegativeOverlap : kNegativeMaxOverlap;
     Box b = around;
     if (near && (k & 2) == 0 && _config.shrunkNegativeScale > 0.f) {
-      // A concentric window shrunk or grown along one axis or both: teaches that the
-      // target's border belongs at the window's border (a window inside the target
-      // otherwise scores as well as the right one, and the estimate shrinks).
-      // Shrunk or grown (1/scale) alike, so neither direction is favoured.
+      // A window shrunk or grown along one axis or both: teaches that the target's
+      // border belongs at the window's border (a window inside the target otherwise
+      // scores as well as the right one, and the estimate shrinks). Shrunk or grown
+      // (1/scale) alike, so neither direction is favoured. In 2D, anchored at the
+      // estimate's start, centre or end along each axis: a window on the target's most
+      // distinctive corner (a panda's head) otherwise outscores the whole target, and the
+      // size drifts there (docs/algorithm.md). In 3D the cylinder and the depth set the size.
       const float sc =
           _rng.below(2) == 0 ? _config.shrunkNegativeScale : 1.f / _config.shrunkNegativeScale;
       const uint32_t mode = _rng.below(3);
       const float sw = mode == 1 ? 1.f : sc, sh = mode == 0 ? 1.f : sc;
-      b = Box{around.x + 0.5f * around.w * (1.f - sw), around.y + 0.5f * around.h * (1.f - sh),
+      float ax = 0.5f, ay = 0.5f;
+      if (!_is3d && _config.anchoredNegatives2d) {
+        ax = 0.5f * static_cast<float>(_rng.below(3));
+        ay = 0.5f * static_cast<float>(_rng.below(3));
+      }
+      b = Box{around.x + ax * around.w * (1.f - sw), around.y + ay * around.h * (1.f - sh),
               around.w * sw, around.h * sh};
       addExample(b, false);
       continue;

@@ -2,7 +2,7 @@
 // chair of the NYU still panned by StillPanReader, where best's measured cylinder size
 // must keep the user's box, legs included, and beat the fixed cylinder, and the TUM
 // keyboard, where best's mode guard must keep a cloud that splits; on real RGB, BoBoT's
-// still panda, where the 2D scale anchor must hold the size.
+// still panda, where 2D tracking must hold the size.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -76,27 +76,34 @@ double sizeError(const std::string& avi, const TrackerConfig& cfg, uint64_t seed
 
 }  // namespace
 
-TEST_CASE("the 2D scale anchor holds a still target's size", "[core][e2e][shared]") {
-  // BoBoT H: the panda and the camera stand still (one ground-truth box for all frames),
-  // yet without the anchor the size random-walks with the learnt positives
-  // (docs/algorithm.md). With it, the same seeds must drift less.
+TEST_CASE("in 2D, corner-anchored near negatives and the scale anchor hold a still target's size",
+          "[core][e2e][shared]") {
+  // BoBoT H: the panda and the camera stand still (one ground-truth box for all frames).
+  // With only concentric shrunk negatives the classifier scores a window on the panda's
+  // head above the whole panda, and the size drifts there (docs/algorithm.md); negatives
+  // anchored at the estimate's corners and edges (1.1 as shipped) must drift less, and
+  // with the scale anchor on top (best's 2D) the size must stay within a few percent.
   const std::string avi = test::sharedDataDir() + "/bobot/Vid_H_panda.avi";
   if (!test::pathExists(avi)) {
     WARN("shared data absent (" << avi << "): skipped");
     return;
   }
-  TrackerConfig on = presetConfig(Preset::Test1_1), off = on;
-  on.scaleAnchor2d = true;
-  const uint64_t seeds = std::getenv("CUETRACK_SANITIZED") != nullptr ? 1 : 3;
-  double withAnchor = 0.0, without = 0.0;
+  const TrackerConfig shipped = presetConfig(Preset::Test1_1);
+  TrackerConfig centred = shipped, anchored = shipped;
+  centred.anchoredNegatives2d = false;
+  anchored.scaleAnchor2d = true;
+  const uint64_t seeds = 3;  // ~20 s under ASan
+  double corner = 0.0, centre = 0.0, anchor = 0.0;
   for (uint64_t seed = 1; seed <= seeds; ++seed) {
-    withAnchor += sizeError(avi, on, seed, 150);
-    without += sizeError(avi, off, seed, 150);
+    corner += sizeError(avi, shipped, seed, 150);
+    centre += sizeError(avi, centred, seed, 150);
+    anchor += sizeError(avi, anchored, seed, 150);
   }
-  INFO("mean |ln size error| with the anchor " << withAnchor / seeds << ", without "
-                                               << without / seeds);
-  CHECK(withAnchor < 0.8 * without);
-  CHECK(withAnchor / seeds < 0.05);
+  INFO("mean |ln size error|: corner-anchored negatives " << corner / seeds << ", centred only "
+                                                          << centre / seeds << ", with the anchor "
+                                                          << anchor / seeds);
+  CHECK(corner < 0.85 * centre);
+  CHECK(anchor / seeds < 0.05);
 }
 
 TEST_CASE("best keeps a real chair's box on real Kinect depth", "[core][e2e][shared]") {

@@ -57,6 +57,9 @@ struct TrackerConfig {
   float nearNegativeOverlap = 0.5f;  // near-miss negatives overlap the estimate less than this
   float shrunkNegativeScale =
       0.65f;  // > 0: some near negatives: the estimate scaled by this or 1/this
+  // 2D (where the classifier alone sets the window's size): a shrunk or grown near negative
+  // is anchored at the estimate's start, centre or end along each axis; else centred.
+  bool anchoredNegatives2d = true;
   float shiftedNegativeFraction =
       0.2f;                          // > 0: some near negatives are the estimate shifted by this
   float positionNoise2d = 0.09f;     // 2D motion noise per frame, x sqrt(w h)
