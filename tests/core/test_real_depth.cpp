@@ -27,13 +27,21 @@ struct Run {
   uint64_t allocations = 0;
 };
 
-Run track(const std::string& spec, const TrackerConfig& cfg, uint64_t seed) {
-  StillPanReader source;
+// Opens `spec` and starts the tracker on its first frame and ground-truth box.
+template <typename Source>
+std::unique_ptr<FrameSlot> start(Source& source, const std::string& spec, const TrackerConfig& cfg,
+                                 uint64_t seed) {
   if (!source.open(spec.c_str())) FAIL(source.error());
   auto slot = std::make_unique<FrameSlot>();
   REQUIRE(source.next(*slot) == ReadStatus::Ok);
   tracker.configure(cfg, seed);
   REQUIRE(tracker.init(slot->frame(), slot->groundTruth) == InitError::None);
+  return slot;
+}
+
+Run track(const std::string& spec, const TrackerConfig& cfg, uint64_t seed) {
+  StillPanReader source;
+  const auto slot = start(source, spec, cfg, seed);
   REQUIRE(tracker.uses3d());
   Run r;
   double sum = 0.0;
@@ -56,11 +64,7 @@ Run track(const std::string& spec, const TrackerConfig& cfg, uint64_t seed) {
 // Mean |ln(w / w_true)| + |ln(h / h_true)| over the first `frames` frames of a BoBoT video.
 double sizeError(const std::string& avi, const TrackerConfig& cfg, uint64_t seed, int frames) {
   BobotVideoReader source;
-  if (!source.open(avi.c_str())) FAIL(source.error());
-  auto slot = std::make_unique<FrameSlot>();
-  REQUIRE(source.next(*slot) == ReadStatus::Ok);
-  tracker.configure(cfg, seed);
-  REQUIRE(tracker.init(slot->frame(), slot->groundTruth) == InitError::None);
+  const auto slot = start(source, avi, cfg, seed);
   double err = 0.0;
   int n = 0;
   while (n < frames && source.next(*slot) == ReadStatus::Ok) {
