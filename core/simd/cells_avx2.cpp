@@ -36,15 +36,12 @@ inline __m256i gather(const void* table, __m256i offsets) {
 int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Box* wins,
               const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order) {
   if (kind == FeatureKind::Depth) return 0;
-  // The feature's cell edges, fractions of the window (Features.hpp: featureCells, gridEdge).
-  int cx[3], cy[3];
-  featureCells(f.x, f.w, cx);
-  featureCells(f.y, f.h, cy);
-  __m256 kx[3], ky[3];
-  for (int e = 0; e < 3; ++e) {
-    kx[e] = _mm256_set1_ps(static_cast<float>(cx[e]) * (1.f / static_cast<float>(kGridCells)));
-    ky[e] = _mm256_set1_ps(static_cast<float>(cy[e]) * (1.f / static_cast<float>(kGridCells)));
-  }
+  // The feature's cell edges, fractions of the window (Features.hpp: featureEdgeFractions,
+  // gridEdge).
+  float fx[3], fy[3];
+  featureEdgeFractions(f, fx, fy);
+  const __m256 kx[3] = {_mm256_set1_ps(fx[0]), _mm256_set1_ps(fx[1]), _mm256_set1_ps(fx[2])};
+  const __m256 ky[3] = {_mm256_set1_ps(fy[0]), _mm256_set1_ps(fy[1]), _mm256_set1_ps(fy[2])};
   const __m256 orgX = _mm256_set1_ps(static_cast<float>(t.originX));
   const __m256 orgY = _mm256_set1_ps(static_cast<float>(t.originY));
   const __m256 half = _mm256_set1_ps(4096.5f);

@@ -21,15 +21,12 @@ inline int32x4_t load4(int32_t a, int32_t b, int32_t c, int32_t d) {
 int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Box* wins,
               const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order) {
   if (kind == FeatureKind::Depth) return 0;
-  // The feature's cell edges, fractions of the window (Features.hpp: featureCells, gridEdge).
-  int cx[3], cy[3];
-  featureCells(f.x, f.w, cx);
-  featureCells(f.y, f.h, cy);
-  float32x4_t kx[3], ky[3];
-  for (int e = 0; e < 3; ++e) {
-    kx[e] = vdupq_n_f32(static_cast<float>(cx[e]) * (1.f / static_cast<float>(kGridCells)));
-    ky[e] = vdupq_n_f32(static_cast<float>(cy[e]) * (1.f / static_cast<float>(kGridCells)));
-  }
+  // The feature's cell edges, fractions of the window (Features.hpp: featureEdgeFractions,
+  // gridEdge).
+  float fx[3], fy[3];
+  featureEdgeFractions(f, fx, fy);
+  const float32x4_t kx[3] = {vdupq_n_f32(fx[0]), vdupq_n_f32(fx[1]), vdupq_n_f32(fx[2])};
+  const float32x4_t ky[3] = {vdupq_n_f32(fy[0]), vdupq_n_f32(fy[1]), vdupq_n_f32(fy[2])};
   const float32x4_t orgX = vdupq_n_f32(static_cast<float>(t.originX));
   const float32x4_t orgY = vdupq_n_f32(static_cast<float>(t.originY));
   const float32x4_t half = vdupq_n_f32(4096.5f);

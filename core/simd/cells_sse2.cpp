@@ -29,15 +29,12 @@ inline __m128 selectPs(__m128 mask, __m128 a, __m128 b) {
 int codeFrame(FeatureKind kind, const Feature& f, const FrameTables& t, const Box* wins,
               const uint8_t* valid, int n, uint16_t* cells, const uint16_t* order) {
   if (kind == FeatureKind::Depth) return 0;
-  // The feature's cell edges, fractions of the window (Features.hpp: featureCells, gridEdge).
-  int cx[3], cy[3];
-  featureCells(f.x, f.w, cx);
-  featureCells(f.y, f.h, cy);
-  __m128 kx[3], ky[3];
-  for (int e = 0; e < 3; ++e) {
-    kx[e] = _mm_set1_ps(static_cast<float>(cx[e]) * (1.f / static_cast<float>(kGridCells)));
-    ky[e] = _mm_set1_ps(static_cast<float>(cy[e]) * (1.f / static_cast<float>(kGridCells)));
-  }
+  // The feature's cell edges, fractions of the window (Features.hpp: featureEdgeFractions,
+  // gridEdge).
+  float fx[3], fy[3];
+  featureEdgeFractions(f, fx, fy);
+  const __m128 kx[3] = {_mm_set1_ps(fx[0]), _mm_set1_ps(fx[1]), _mm_set1_ps(fx[2])};
+  const __m128 ky[3] = {_mm_set1_ps(fy[0]), _mm_set1_ps(fy[1]), _mm_set1_ps(fy[2])};
   const __m128 orgX = _mm_set1_ps(static_cast<float>(t.originX));
   const __m128 orgY = _mm_set1_ps(static_cast<float>(t.originY));
   const __m128 half = _mm_set1_ps(4096.5f);

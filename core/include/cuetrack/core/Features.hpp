@@ -111,6 +111,18 @@ inline void featureCells(float pos, float len, int c[3]) {
   c[2] = b;
 }
 
+// The fraction of the window at each of a feature's cell edges, x and y (k / kGridCells,
+// exact): what the SIMD cell coders broadcast once per feature.
+inline void featureEdgeFractions(const Feature& f, float fx[3], float fy[3]) {
+  int cx[3], cy[3];
+  featureCells(f.x, f.w, cx);
+  featureCells(f.y, f.h, cy);
+  for (int e = 0; e < 3; ++e) {
+    fx[e] = static_cast<float>(cx[e]) * (1.f / static_cast<float>(kGridCells));
+    fy[e] = static_cast<float>(cy[e]) * (1.f / static_cast<float>(kGridCells));
+  }
+}
+
 // Table coordinate of cell edge k of a window starting at `origin` (window start minus
 // the table's origin) of `size` pixels, clipped to [0, limit]. The SIMD cell coders
 // repeat these operations in this order.
