@@ -24,7 +24,7 @@ void StrongClassifier::findDistinct() {
 
 bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache,
                              const TrainingSet& set, int m, float* featureErrors, int candidates,
-                             float anchorWeight) {
+                             float anchorWeight, int refreshRounds) {
   const int n = set.capacity();
   const int8_t* y = set.labels();
   const int numPos = set.numPositives(), numNeg = set.numNegatives();
@@ -47,14 +47,15 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
   const int split = set.positiveSlots();  // label layout: positives first
   if (candidates < 1) candidates = 1;
   if (candidates > kMaxPoolFeatures) candidates = kMaxPoolFeatures;
-  int cand[kMaxPoolFeatures];  // later rounds' candidates, ascending round-0 error
+  int cand[kMaxPoolFeatures];  // later rounds' candidates, ascending error at the last ranking
   float candErr[kMaxPoolFeatures];
   int numCand = 0;
   _m = 0;
   for (int round = 0; round < m; ++round) {
     int best = -1;
     float bestErr = 0.f;
-    if (round == 0) {
+    if (round == 0 || (refreshRounds > 0 && round % refreshRounds == 0)) {
+      numCand = 0;  // rank the whole pool under the current weights
       float e4[4];
       for (int f = 0; f < pool.size(); ++f) {
         if (f % 4 == 0 && f + 4 <= pool.size()) {
@@ -65,7 +66,7 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
         const float e = f - f % 4 + 4 <= pool.size()
                             ? e4[f % 4]
                             : WeakClassifier::binnedErrorSplit(cache.row(f), w, split, n);
-        if (featureErrors != nullptr) featureErrors[f] = e;
+        if (featureErrors != nullptr && round == 0) featureErrors[f] = e;
         if (best < 0 || e < bestErr) {
           best = f;
           bestErr = e;

@@ -468,7 +468,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
                roi);  // fill the negative FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
   _strong.train(_pool, _cache, _set, _numWeak, _featureErrors, _config.boostCandidates,
-                _config.anchorWeight);
+                _config.anchorWeight, _config.boostRefreshRounds);
 
   _silhouette = SilhouetteCalibration{};
   if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
@@ -550,7 +550,7 @@ void Tracker::learn(const Box& estimate, const PixelRect& roi) {
     if (replaced >= 0) _cache.refreshFeature(replaced, _pool, _set);
   }
   _strong.train(_pool, _cache, _set, _numWeak, _featureErrors, _config.boostCandidates,
-                _config.anchorWeight);
+                _config.anchorWeight, _config.boostRefreshRounds);
 }
 
 TrackResult Tracker::update(const Frame& frame) {

@@ -239,3 +239,70 @@ TEST_CASE("GentleBoost separates object windows from background and generalises"
   empty.reset(20);
   REQUIRE_FALSE(strong.train(pool, cache, empty, 5, errors));
 }
+
+namespace {
+bool sameFeature(const Feature& a, const Feature& b) {
+  return a.kind == b.kind && a.x == b.x && a.y == b.y && a.w == b.w && a.h == b.h;
+}
+int distinctFeatures(const StrongClassifier& s) {
+  int d = 0;
+  for (int i = 0; i < s.size(); ++i) {
+    bool seen = false;
+    for (int j = 0; j < i; ++j) seen = seen || sameFeature(s.feature(i), s.feature(j));
+    d += seen ? 0 : 1;
+  }
+  return d;
+}
+// Variant 0: the object (red, bright left half); 1: the same shape in green; 2: red
+// without the split; 3: background only.
+void renderVariant(uint32_t seed, int variant) {
+  render(seed, false);
+  if (variant == 3) return;
+  Rng r(seed * 7 + 1);
+  for (int y = 20; y < 44; ++y)
+    for (int x = 20; x < 44; ++x) {
+      const int base = variant == 2 ? 130 : (x < 32 ? 200 : 60);
+      const uint8_t v = static_cast<uint8_t>(base + r.below(30));
+      const uint8_t q = static_cast<uint8_t>(v / 4);
+      image[y * W + x] = variant == 1 ? Rgb8{q, v, q} : Rgb8{v, q, q};
+    }
+}
+
+}  // namespace
+
+TEST_CASE("later boosting rounds search the candidates, re-ranked every refresh", "[core][boost]") {
+  Rng rng(2);
+  REQUIRE(pool.build(true, false, true, FeatureSampling::Sparse, rng));
+  set.reset(60);
+  Frame f;
+  f.rgb = RgbView{image, W, H, W};
+  for (int i = 0; i < 60; ++i) {
+    // Negatives: background, the green or the unsplit object, and (1 in 8) the object
+    // itself (label noise): no single feature fits them all.
+    const bool pos = i % 4 == 0;
+    renderVariant(200 + static_cast<uint32_t>(i),
+                  pos ? 0 : (i % 8 == 2 ? 0 : (i % 4 == 1 ? 3 : 1 + (i / 4) % 2)));
+    channels.compute(f, PixelRect{0, 0, W, H}, false);
+    const int slot = set.add(channels.tables(), Box{16.f, 16.f, 32.f, 32.f}, pos);
+    cache.refreshExample(slot, pool, set);
+  }
+  REQUIRE(set.numPositives() == 15);
+  static float errors[kMaxPoolFeatures];
+  static StrongClassifier full, refreshed, stale, sometimes;
+  REQUIRE(full.train(pool, cache, set, 12, errors, kMaxPoolFeatures));
+  // One candidate, re-ranked every round: every round searches the whole pool.
+  REQUIRE(refreshed.train(pool, cache, set, 12, errors, 1, 1.f, 1));
+  REQUIRE(refreshed.size() == full.size());
+  for (int i = 0; i < full.size(); ++i) REQUIRE(sameFeature(refreshed.feature(i), full.feature(i)));
+  // One candidate, never re-ranked: every round repeats the round-0 best (control: the
+  // full search does not).
+  REQUIRE(stale.train(pool, cache, set, 12, errors, 1, 1.f, 0));
+  REQUIRE(distinctFeatures(stale) == 1);
+  REQUIRE(distinctFeatures(full) > 1);
+  // Re-ranked every 4 rounds: the rounds in between repeat the last ranking's best.
+  REQUIRE(sometimes.train(pool, cache, set, 12, errors, 1, 1.f, 4));
+  for (int i = 0; i < sometimes.size(); ++i)
+    REQUIRE(sameFeature(sometimes.feature(i), sometimes.feature(i - i % 4)));
+  REQUIRE(distinctFeatures(sometimes) > 1);
+  REQUIRE(distinctFeatures(sometimes) <= 3);
+}

@@ -141,20 +141,21 @@ TEST_CASE("best's mode guard keeps a keyboard whose cloud splits", "[core][e2e][
     WARN("shared data absent (" << dir << "): skipped");
     return;
   }
-  // The TUM desk's keyboard: repetitive keys in front of the table. On seeds 4, 7 and 16
-  // of 1-16 the cloud splits between the keyboard and the table above it; the weighted
-  // mean falls between the two, lost detection fires and the target is not found again
-  // (hits 38, 5 and 35 of 149). With the guard the estimate stays on the keyboard.
+  // The TUM desk's keyboard: repetitive keys in front of the table. On seed 36 of 1-40
+  // the cloud splits between the keyboard and the table above it; the weighted mean
+  // falls between the two, lost detection fires and the target is not found again for a
+  // while (hits 127 of 149; before the boosting's candidate refresh, seeds 4, 7 and 16 of
+  // 1-16 did). With the guard the estimate stays on the keyboard.
   const std::string spec = "pan:" + dir + "/1.png," + dir +
                            "/1_depth.png,202,257,184,50,517.3,516.5,318.6,255.3,0.2:150";
   TrackerConfig noGuard = presetConfig(Preset::Best);
   noGuard.modeGuard = false;
-  const Run control = track(spec, noGuard, 7);
+  const Run control = track(spec, noGuard, 36);
   INFO("without the guard: " << control.hits << " hits of " << control.frames);
   CHECK(control.hits < control.frames - 10);  // control: this seed does split
   const bool sanitized = std::getenv("CUETRACK_SANITIZED") != nullptr;
-  for (const uint64_t seed : {7u, 4u, 1u}) {
-    if (sanitized && seed != 7u) continue;
+  for (const uint64_t seed : {36u, 4u, 1u}) {
+    if (sanitized && seed != 36u) continue;
     const Run best = track(spec, presetConfig(Preset::Best), seed);
     INFO("seed " << seed << ": " << best.hits << " hits of " << best.frames << ", overlap "
                  << best.meanOverlap);

@@ -3,7 +3,10 @@
 // binned weak classifier has the least weighted squared error, fits its lognormal
 // weak classifier to the current weights, and reweights w_i *= exp(-y_i f_m(x_i)).
 // Positives and negatives start with half the total weight each. For speed, round 0
-// ranks the whole pool and later rounds search only its `candidates` best features.
+// ranks the whole pool and later rounds search only its `candidates` best features;
+// every `refreshRounds` rounds the whole pool is ranked again under the current
+// weights (the features that separate the examples still wrong are rarely among the
+// round-0 best: without it BoBoT 1.1 loses 1.3 points, docs/benchmarks.md).
 #pragma once
 
 #include <cstdint>
@@ -23,7 +26,8 @@ class StrongClassifier {
   // error (the pool update's ranking). False when there are no positives or negatives.
   StrongClassifier() { _shares.build(); }
   bool train(const FeaturePool& pool, const ResponseCache& cache, const TrainingSet& set, int m,
-             float* featureErrors, int candidates = kMaxPoolFeatures, float anchorWeight = 1.f);
+             float* featureErrors, int candidates = kMaxPoolFeatures, float anchorWeight = 1.f,
+             int refreshRounds = 0);  // 0: never
   // c(x) for window `win` (frame px) on the frame tables.
   template <typename U, typename S>
   float evaluate(const ChannelTables<U, S>& t, const Box& win) const {

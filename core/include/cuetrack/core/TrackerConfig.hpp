@@ -54,6 +54,7 @@ struct TrackerConfig {
   int initialPositives = 9;          // the init box plus slightly shifted copies, kept for good
   float anchorWeight = 2.f;          // boosting weight of a kept initial positive vs a recent one
   int boostCandidates = 48;          // GentleBoost rounds after the first search these best
+  int boostRefreshRounds = 12;       // ... and every this many rounds the whole pool again
   float nearNegativeOverlap = 0.5f;  // near-miss negatives overlap the estimate less than this
   float shrunkNegativeScale =
       0.65f;  // > 0: some near negatives: the estimate scaled by this or 1/this
