@@ -292,7 +292,35 @@ Box Tracker::templateScale(const Box& est) {
   const float g = _config.templateGain * _config.templateScaleStep;
   const float w = est.w * fmath::fastExp(g * static_cast<float>(bi - k));
   const float h = est.h * fmath::fastExp(g * static_cast<float>(bj - k));
-  return Box{cx - 0.5f * w, cy - 0.5f * h, w, h};
+  float ncx = cx, ncy = cy;
+  if (_config.templateShiftStep > 0.f) {
+    // The best size's template, shifted by -2..2 steps of templateShiftStep of its side
+    // along each axis: the centre the learnt positives drift from.
+    const float bw = est.w * fmath::fastExp(_config.templateScaleStep * static_cast<float>(bi - k));
+    const float bh = est.h * fmath::fastExp(_config.templateScaleStep * static_cast<float>(bj - k));
+    const float stepX = _config.templateShiftStep * bw, stepY = _config.templateShiftStep * bh;
+    float bestShift = -2.f;
+    int si = 0, sj = 0;
+    for (int dj = -2; dj <= 2; ++dj) {
+      for (int di = -2; di <= 2; ++di) {
+        const float x = cx + stepX * static_cast<float>(di) - 0.5f * bw;
+        const float y = cy + stepY * static_cast<float>(dj) - 0.5f * bh;
+        if (!grayTemplate(Box{x, y, bw, bh}, _probeGray)) continue;
+        float ncc = 0.f;
+        for (int q = 0; q < kPatchSize * kPatchSize; ++q) ncc += _probeGray[q] * _anchorGray[q];
+        if (ncc > bestShift) {
+          bestShift = ncc;
+          si = di;
+          sj = dj;
+        }
+      }
+    }
+    if (bestShift >= _config.templateMinNcc) {
+      ncx += _config.templateShiftGain * stepX * static_cast<float>(si);
+      ncy += _config.templateShiftGain * stepY * static_cast<float>(sj);
+    }
+  }
+  return Box{ncx - 0.5f * w, ncy - 0.5f * h, w, h};
 }
 
 void Tracker::addExample(const Box& win, bool positive) {

@@ -85,7 +85,8 @@ class Tracker {
                      float* surfaceMm);
   // At init: how the user's box relates to the silhouette measured in it.
   void calibrateSilhouette(const Frame& frame, const Box& b, float diameterMm);
-  // 2D: the estimate's size nudged towards the best match of the init box's template.
+  // 2D: the estimate's size, then its centre, nudged towards the best match of the init
+  // box's template.
   Box templateScale(const Box& est);
   // Zero-mean, unit-norm grey cells of `win` into out (kPatchSize^2); false if flat.
   bool grayTemplate(const Box& win, float* out);

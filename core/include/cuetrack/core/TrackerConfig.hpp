@@ -37,7 +37,7 @@ struct TrackerConfig {
   bool adaptCylinderSize = false;  // D, H (and centre) follow the silhouette measured in depth
   bool lostDetection = false;      // declare lost, freeze learning, re-acquire
   bool fallbackTo2d = false;       // 3D/depth requested but the frame has none: run 2D RGB
-  bool scaleAnchor2d = false;      // 2D: the size follows the init template's best match
+  bool scaleAnchor2d = false;      // 2D: size and centre follow the init template's best match
   bool modeGuard = false;  // a split cloud: estimate from the best particle's mode, not the mean
   // fallbackTo2d: when a 3D/depth configuration runs 2D RGB, these replace the 3D values
   // (0 = same as in 3D): the RGB-only classifier needs more weak classifiers (the paper's
@@ -80,6 +80,11 @@ struct TrackerConfig {
   float templateScaleStep = 0.04f;  // ladder step of ln w, ln h
   float templateMinNcc = 0.85f;     // best match needed
   float templateGain = 0.3f;        // fraction of the ladder's correction applied
+  // ... then the best size's template is matched at -2..2 shifts of templateShiftStep of
+  // its side along each axis; a good best match (>= templateMinNcc) moves the centre
+  // templateShiftGain of the way (0 step: size only).
+  float templateShiftStep = 0.02f;
+  float templateShiftGain = 0.6f;
   // modeGuard (WeightedMean only): when the weighted mean's own score is this far below the
   // best particle's, and that particle's confidence (c + 1) / 2 is at least the minimum, the
   // cloud has split over two places and the mean lies between them; the estimate is then
