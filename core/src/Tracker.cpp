@@ -266,6 +266,13 @@ bool Tracker::grayTemplate(const Box& win, float* out) {
   return true;
 }
 
+float Tracker::templateMatch(const Box& win) {
+  if (!grayTemplate(win, _probeGray)) return -2.f;
+  float ncc = 0.f;
+  for (int q = 0; q < kPatchSize * kPatchSize; ++q) ncc += _probeGray[q] * _anchorGray[q];
+  return ncc;
+}
+
 Box Tracker::templateScale(const Box& est) {
   int k = _config.templateScaleSteps;
   if (k > kMaxTemplateScaleSteps) k = kMaxTemplateScaleSteps;
@@ -277,9 +284,7 @@ Box Tracker::templateScale(const Box& est) {
     const float h = est.h * fmath::fastExp(_config.templateScaleStep * static_cast<float>(j - k));
     for (int i = 0; i < side; ++i) {
       const float w = est.w * fmath::fastExp(_config.templateScaleStep * static_cast<float>(i - k));
-      if (!grayTemplate(Box{cx - 0.5f * w, cy - 0.5f * h, w, h}, _probeGray)) continue;
-      float ncc = 0.f;
-      for (int q = 0; q < kPatchSize * kPatchSize; ++q) ncc += _probeGray[q] * _anchorGray[q];
+      const float ncc = templateMatch(Box{cx - 0.5f * w, cy - 0.5f * h, w, h});
       if (ncc > best) {
         best = ncc;
         bi = i;
@@ -305,9 +310,7 @@ Box Tracker::templateScale(const Box& est) {
       for (int di = -2; di <= 2; ++di) {
         const float x = cx + stepX * static_cast<float>(di) - 0.5f * bw;
         const float y = cy + stepY * static_cast<float>(dj) - 0.5f * bh;
-        if (!grayTemplate(Box{x, y, bw, bh}, _probeGray)) continue;
-        float ncc = 0.f;
-        for (int q = 0; q < kPatchSize * kPatchSize; ++q) ncc += _probeGray[q] * _anchorGray[q];
+        const float ncc = templateMatch(Box{x, y, bw, bh});
         if (ncc > bestShift) {
           bestShift = ncc;
           si = di;

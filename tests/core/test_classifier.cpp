@@ -199,21 +199,28 @@ float score(uint32_t seed, bool withObject) {
   return strong.evaluate(channels.tables(), win);
 }
 
-}  // namespace
-
-TEST_CASE("GentleBoost separates object windows from background and generalises", "[core][boost]") {
-  Rng rng(1);
+// A fresh pool (from `poolSeed`) and a set of 60 windows [16, 48)^2, every 4th positive
+// (the set keeps a quarter positives); draw(i, positive) renders example i.
+template <typename Draw>
+void fillSet(uint64_t poolSeed, Draw draw) {
+  Rng rng(poolSeed);
   REQUIRE(pool.build(true, false, true, FeatureSampling::Sparse, rng));
   set.reset(60);
   Frame f;
   f.rgb = RgbView{image, W, H, W};
   for (int i = 0; i < 60; ++i) {
-    const bool pos = i % 4 == 0;  // the set keeps a quarter positives
-    render(100 + i, pos);
+    const bool pos = i % 4 == 0;
+    draw(i, pos);
     channels.compute(f, PixelRect{0, 0, W, H}, false);
     const int slot = set.add(channels.tables(), Box{16.f, 16.f, 32.f, 32.f}, pos);
     cache.refreshExample(slot, pool, set);
   }
+}
+
+}  // namespace
+
+TEST_CASE("GentleBoost separates object windows from background and generalises", "[core][boost]") {
+  fillSet(1, [](int i, bool pos) { render(100 + static_cast<uint32_t>(i), pos); });
   REQUIRE(set.numPositives() == 15);
   REQUIRE(set.numNegatives() == 45);
   static float errors[kMaxPoolFeatures];
@@ -271,21 +278,12 @@ void renderVariant(uint32_t seed, int variant) {
 }  // namespace
 
 TEST_CASE("later boosting rounds search the candidates, re-ranked every refresh", "[core][boost]") {
-  Rng rng(2);
-  REQUIRE(pool.build(true, false, true, FeatureSampling::Sparse, rng));
-  set.reset(60);
-  Frame f;
-  f.rgb = RgbView{image, W, H, W};
-  for (int i = 0; i < 60; ++i) {
-    // Negatives: background, the green or the unsplit object, and (1 in 8) the object
-    // itself (label noise): no single feature fits them all.
-    const bool pos = i % 4 == 0;
+  // Negatives: background, the green or the unsplit object, and (1 in 8) the object
+  // itself (label noise): no single feature fits them all.
+  fillSet(2, [](int i, bool pos) {
     renderVariant(200 + static_cast<uint32_t>(i),
                   pos ? 0 : (i % 8 == 2 ? 0 : (i % 4 == 1 ? 3 : 1 + (i / 4) % 2)));
-    channels.compute(f, PixelRect{0, 0, W, H}, false);
-    const int slot = set.add(channels.tables(), Box{16.f, 16.f, 32.f, 32.f}, pos);
-    cache.refreshExample(slot, pool, set);
-  }
+  });
   REQUIRE(set.numPositives() == 15);
   static float errors[kMaxPoolFeatures];
   static StrongClassifier full, refreshed, stale, sometimes;

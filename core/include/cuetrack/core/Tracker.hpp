@@ -88,6 +88,8 @@ class Tracker {
   // 2D: the estimate's size, then its centre, nudged towards the best match of the init
   // box's template.
   Box templateScale(const Box& est);
+  // NCC of `win`'s grey cells with the init template; -2 when `win` is flat.
+  float templateMatch(const Box& win);
   // Zero-mean, unit-norm grey cells of `win` into out (kPatchSize^2); false if flat.
   bool grayTemplate(const Box& win, float* out);
 
