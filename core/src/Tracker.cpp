@@ -310,7 +310,8 @@ Box Tracker::templateScale(const Box& est) {
       for (int di = -2; di <= 2; ++di) {
         const float x = cx + stepX * static_cast<float>(di) - 0.5f * bw;
         const float y = cy + stepY * static_cast<float>(dj) - 0.5f * bh;
-        const float ncc = templateMatch(Box{x, y, bw, bh});
+        // No shift is the ladder's best box: its match is already known.
+        const float ncc = di == 0 && dj == 0 ? best : templateMatch(Box{x, y, bw, bh});
         if (ncc > bestShift) {
           bestShift = ncc;
           si = di;
