@@ -58,7 +58,7 @@ bobot_cmd=("$BENCH" "${bobot_seqs[@]}" --tracker cuetrack,opencv-all --config 1.
 syn_seqs=()
 for s in "${SCENES[@]}"; do syn_seqs+=("synth:$s"); done
 syn_cmd=("$BENCH" "${syn_seqs[@]}" --tracker cuetrack,opencv-all
-         --config 2.1,2.2,2.3,2.4,2.5,best --runs "$SYN_RUNS" --peer-runs "$PEER_RUNS"
+         --config 2.1,2.2,2.3,2.4,2.5,best,best-norefine --runs "$SYN_RUNS" --peer-runs "$PEER_RUNS"
          "${frames_opt[@]}" --paper table3 --markdown "$OUT/synth.md" --json "$OUT/synth.json"
          --plots "$OUT/plots" --csv "$OUT/csv")
 # Real depth: the stills' targets (box in px) and intrinsics, as the data README gives them.

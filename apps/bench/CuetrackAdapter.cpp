@@ -17,7 +17,7 @@ Tracker& sharedTracker() {
 // Ablations of the beyond-the-paper switches: "<preset>-<switch off>", e.g.
 // best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
 // best-noanchor (no 2D scale anchor), best-nomodeguard (the weighted mean even when the
-// cloud has split).
+// cloud has split), best-norefine (search windows not hill-climbed while lost).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
     const char* suffix;
@@ -26,7 +26,8 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
   static const Off kOffs[] = {{"-nolost", &TrackerConfig::lostDetection},
                               {"-fixedsize", &TrackerConfig::adaptCylinderSize},
                               {"-noanchor", &TrackerConfig::scaleAnchor2d},
-                              {"-nomodeguard", &TrackerConfig::modeGuard}};
+                              {"-nomodeguard", &TrackerConfig::modeGuard},
+                              {"-norefine", &TrackerConfig::refineSearch}};
   for (const Off& o : kOffs) {
     const std::string suffix(o.suffix);
     if (name.size() <= suffix.size() ||

@@ -53,8 +53,8 @@ const char* usage() {
          "                     (repeatable; default cuetrack)\n"
          "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best, or a\n"
          "                     preset with a beyond-the-paper switch off: best-nolost,\n"
-         "                     best-fixedsize, best-noanchor, best-nomodeguard (repeatable;\n"
-         "                     default best)\n"
+         "                     best-fixedsize, best-noanchor, best-nomodeguard,\n"
+         "                     best-norefine (repeatable; default best)\n"
          "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
          "  --peer-runs N      runs for the OpenCV peers (default: --runs)\n"
          "  --seed S           first seed (default 1)\n"
@@ -112,7 +112,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
         if (!isCuetrackConfig(c)) {
           *err = "--config: unknown configuration '" + c +
                  "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
-                 "best-noanchor, best-nomodeguard)";
+                 "best-noanchor, best-nomodeguard, best-norefine)";
           return false;
         }
         configs.push_back(c);

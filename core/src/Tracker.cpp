@@ -18,6 +18,10 @@ constexpr int kSearchEvery = 2;
 constexpr float kSearchGrowth = 0.25f;
 constexpr float kDepthJumpRatio = 0.75f;  // 3D: estimate depth / last learnt depth (or inverse)
 constexpr float kSearchInside = 0.8f;     // while lost, windows must lie this much inside
+// refineSearch: hill-climbing steps of a search window, first this part of its side, halved
+// when no neighbour scores higher; this many steps.
+constexpr float kRefineStep = 0.12f;
+constexpr int kRefineSteps = 6;
 constexpr float kDefaultDtS = 1.f / 30.f;
 // adaptCylinderSize: the silhouette is the depth within surface +- (D/2 + m) (a face
 // seen obliquely reaches in front of the centre's depth as well as behind it), with
@@ -219,6 +223,73 @@ Particle Tracker::searchParticle(bool wide) {
     q.size[1] *= sc;
   }
   return q;
+}
+
+void Tracker::refineSearchWindows(int n, const PixelRect& roi) {
+  // The best scored fresh search windows (every kSearchEvery-th particle), best first.
+  int top[kMaxSearchRefineWindows];
+  int k = _config.searchRefineWindows;
+  if (k > kMaxSearchRefineWindows) k = kMaxSearchRefineWindows;
+  int nt = 0;
+  for (int i = 0; i < n; i += kSearchEvery) {
+    if (_valid[i] == 0) continue;
+    int j;
+    if (nt < k)
+      j = nt++;
+    else if (_scores[i] > _scores[top[k - 1]])
+      j = k - 1;
+    else
+      continue;
+    while (j > 0 && _scores[top[j - 1]] < _scores[i]) {
+      top[j] = top[j - 1];
+      --j;
+    }
+    top[j] = i;
+  }
+  for (int t = 0; t < nt; ++t) {
+    const int i = top[t];
+    const Box start = _boxes[i];
+    Box b = start;
+    float score = _scores[i];
+    float step = kRefineStep;
+    for (int s = 0; s < kRefineSteps; ++s) {
+      const float dx[4] = {step * b.w, -step * b.w, 0.f, 0.f};
+      const float dy[4] = {0.f, 0.f, step * b.h, -step * b.h};
+      int best = -1;
+      float bestScore = score;
+      for (int m = 0; m < 4; ++m) {
+        const Box c{b.x + dx[m], b.y + dy[m], b.w, b.h};
+        const PixelRect r = clipBox(c, _imageW, _imageH);
+        if (static_cast<float>(r.width() * r.height()) < kSearchInside * c.area() ||
+            r.x0 < roi.x0 || r.y0 < roi.y0 || r.x1 > roi.x1 || r.y1 > roi.y1)
+          continue;
+        const float sc = _strong.evaluate(_channels.tables(), c);
+        if (sc > bestScore) {
+          bestScore = sc;
+          best = m;
+        }
+      }
+      if (best < 0) {
+        step *= 0.5f;
+        continue;
+      }
+      b.x += dx[best];
+      b.y += dy[best];
+      score = bestScore;
+    }
+    // Move the particle by the same image shift: along x, y at its depth in 3D.
+    Particle& q = _filter[i];
+    const float du = b.x - start.x, dv = b.y - start.y;
+    if (_is3d) {
+      q.p[0] += du * q.p[2] / _k.fx;
+      q.p[1] += dv * q.p[2] / _k.fy;
+    } else {
+      q.p[0] += du;
+      q.p[1] += dv;
+    }
+    _boxes[i] = particleBox(q);
+    _scores[i] = score;
+  }
 }
 
 bool Tracker::grayTemplate(const Box& win, float* out) {
@@ -670,6 +741,11 @@ TrackResult Tracker::update(const Frame& frame) {
     for (int i = 0; i < n; ++i) _order[start[_band[i]]++] = static_cast<uint16_t>(i);
   }
   _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores, _order);
+  // Searching: a fresh window scores high only within a few % of the reappeared target's
+  // window; one that lands 10-30% off scores below the background's best and is lost at
+  // resampling. The best few climb to their peak first (docs/algorithm.md).
+  if (wasLost && _config.refineSearch && _config.searchRefineWindows > 0)
+    refineSearchWindows(n, roi);
   float cMax = -2.f;
   for (int i = 0; i < n; ++i)
     if (_scores[i] > cMax) cMax = _scores[i];

@@ -89,6 +89,7 @@ TEST_CASE("preset names round-trip and configure the paper's tests", "[core][pre
   const TrackerConfig best = presetConfig(Preset::Best);
   REQUIRE(
       (best.adaptCylinderSize && best.lostDetection && best.fallbackTo2d && best.scaleAnchor2d));
+  REQUIRE((best.modeGuard && best.refineSearch));
   // The 2D fallback: the paper's RGB M, a longer run of low confidence before lost.
   REQUIRE(best.numWeakClassifiers == 23);
   REQUIRE(best.numWeakClassifiers2d == 32);
@@ -98,6 +99,8 @@ TEST_CASE("preset names round-trip and configure the paper's tests", "[core][pre
     REQUIRE_FALSE(c.adaptCylinderSize);
     REQUIRE_FALSE(c.lostDetection);
     REQUIRE_FALSE(c.scaleAnchor2d);
+    REQUIRE_FALSE(c.modeGuard);
+    REQUIRE_FALSE(c.refineSearch);
     REQUIRE(c.numWeakClassifiers2d == 0);
     REQUIRE(c.lostAfter2d == 0);
   }

@@ -77,6 +77,9 @@ class Tracker {
   void learn(const Box& estimate, const PixelRect& roi);
   bool medianDepthMm(const Frame& frame, const Box& box, float* out);
   Particle searchParticle(bool wide);
+  // refineSearch: hill-climbs the best scored fresh search windows (scores and particles
+  // updated in place); windows stay inside `roi`, where the tables are.
+  void refineSearchWindows(int n, const PixelRect& roi);
   // adaptCylinderSize: moves D, H and the centre of est and every particle toward the
   // silhouette measured in depth; false when nothing was measured.
   bool followTargetSize(const Frame& frame, Particle& est);

@@ -19,6 +19,7 @@ enum class Estimator : uint8_t {
 };
 
 inline constexpr int kMaxTemplateScaleSteps = 4;
+inline constexpr int kMaxSearchRefineWindows = 16;
 
 struct TrackerConfig {
   // Paper parameters
@@ -38,7 +39,8 @@ struct TrackerConfig {
   bool lostDetection = false;      // declare lost, freeze learning, re-acquire
   bool fallbackTo2d = false;       // 3D/depth requested but the frame has none: run 2D RGB
   bool scaleAnchor2d = false;      // 2D: size and centre follow the init template's best match
-  bool modeGuard = false;  // a split cloud: estimate from the best particle's mode, not the mean
+  bool modeGuard = false;     // a split cloud: estimate from the best particle's mode, not the mean
+  bool refineSearch = false;  // lostDetection: the best fresh search windows climb to a peak
   // fallbackTo2d: when a 3D/depth configuration runs 2D RGB, these replace the 3D values
   // (0 = same as in 3D): the RGB-only classifier needs more weak classifiers (the paper's
   // RGB tests use 32), and partial occlusions in RGB dip the confidence for longer.
@@ -91,6 +93,9 @@ struct TrackerConfig {
   // the weighted mean of the particles whose windows overlap the best particle's by >= 0.5.
   float modeGuardMargin = 0.2f;
   float modeGuardMinConfidence = 0.7f;
+  // refineSearch: while lost, this many of the frame's fresh search windows, the best
+  // scored, are hill-climbed in image position before weighing (<= kMaxSearchRefineWindows).
+  int searchRefineWindows = 8;
 };
 
 enum class Preset : uint8_t {
