@@ -27,6 +27,12 @@ void shares(float angle, float mag, FeatureKind kind, uint8_t* a, float* wc, flo
 }
 
 constexpr float kVarPrior = 0.05f;  // ln-units^2 added to every fitted variance
+// Each class's density in a bin is its lognormal plus this x the bin's mass, per ln-unit (a
+// uniform outlier part). Without it a response off the negatives' lognormal scores +1
+// however far it also is from the positives', so every weak classifier saturates and windows
+// near the target and on part of it all score c = 1: the particles' weights cannot tell
+// them apart (docs/algorithm.md).
+constexpr float kDensityFloor = 0.02f;
 constexpr float kEps = 1e-7f;
 
 }  // namespace
@@ -223,6 +229,8 @@ void WeakClassifier::fit(const Code* codes, const float* w, const int8_t* y, int
       var += kVarPrior;
       const float norm = mass / fmath::sqrtf(var);
       fitk::densRow(lnm, mu, -0.5f / var, norm, dens[cls][b], kLutMags);
+      const float floorDens = kDensityFloor * mass;
+      for (int q = 0; q < kLutMags; ++q) dens[cls][b][q] += floorDens;
     }
   }
   static_assert(kLutMags % 4 == 0, "the fit kernels take 4 steps at a time");

@@ -106,6 +106,38 @@ TEST_CASE("a weak classifier learns orientation and magnitude and generalises", 
   REQUIRE(wd.predict(resp(1.f, 300.f)) < -0.9f);
 }
 
+TEST_CASE("a weak classifier still ranks responses the negatives never reach", "[core][weak]") {
+  // Positives: gradients at 1 rad, magnitude ~30; negatives: the same orientation, weak
+  // (~4). Without a density floor the negatives' lognormal underflows beside the
+  // positives' mode, so f is exactly +1 there and over a wide band around it: the mode and
+  // a response 1.5x stronger vote alike, and windows near the target and on part of it
+  // score the same c = 1 (docs/algorithm.md). With the floor, f still falls off the mode,
+  // and far from both classes it tends to their balance in those bins.
+  constexpr int n = 100;
+  Code codes[n];
+  float w[n];
+  int8_t y[n];
+  Rng r(9);
+  for (int i = 0; i < n; ++i) {
+    y[i] = i < n / 2 ? 1 : -1;
+    const float mag = (y[i] > 0 ? 30.f : 4.f) * fmath::fastExp(0.1f * r.gaussian());
+    codes[i] = encode(resp(1.f + 0.05f * r.gaussian(), mag), FeatureKind::Gray);
+    w[i] = 1.f / n;
+  }
+  WeakClassifier wc;
+  wc.fit(codes, w, y, n, FeatureKind::Gray);
+  const float f30 = wc.predict(resp(1.f, 30.f)), f45 = wc.predict(resp(1.f, 45.f));
+  const float f60 = wc.predict(resp(1.f, 60.f)), f240 = wc.predict(resp(1.f, 240.f));
+  INFO("f at magnitude 30 " << f30 << ", 45 " << f45 << ", 60 " << f60 << ", 240 " << f240);
+  REQUIRE(wc.predict(resp(1.f, 4.f)) < -0.9f);
+  REQUIRE(f30 > 0.9f);
+  REQUIRE(f30 < 1.f);  // not saturated
+  REQUIRE(f30 > f45 + 1e-3f);
+  REQUIRE(f45 > f60 + 1e-3f);
+  // All outer-bin: positives' share 1, negatives' ~0.25 of their (equal) weight.
+  REQUIRE(f240 == Approx(0.6f).margin(0.1f));
+}
+
 TEST_CASE("binned error ranks an informative feature above a useless one", "[core][weak]") {
   constexpr int n = 100;
   Code good[n], bad[n];
