@@ -28,10 +28,10 @@ void shares(float angle, float mag, FeatureKind kind, uint8_t* a, float* wc, flo
 
 constexpr float kVarPrior = 0.05f;  // ln-units^2 added to every fitted variance
 // Each class's density in a bin is its lognormal plus this x the bin's mass, per ln-unit (a
-// uniform outlier part). Without it a response off the negatives' lognormal scores +1
-// however far it also is from the positives', so every weak classifier saturates and windows
-// near the target and on part of it all score c = 1: the particles' weights cannot tell
-// them apart (docs/algorithm.md).
+// uniform outlier part). Without it the negatives' lognormal underflows beside the
+// positives' mode and f is exactly +1 over a wide band of magnitudes there, so every weak
+// classifier saturates, windows near the target and on part of it all score c = 1, and the
+// particles' weights cannot tell them apart (docs/algorithm.md).
 constexpr float kDensityFloor = 0.02f;
 constexpr float kEps = 1e-7f;
 
