@@ -442,6 +442,7 @@ TEST_CASE("documented exit codes, each with one line naming what is at fault") {
       {{CUETRACK_APP_BIN, "--bogus"}, 1, "unknown option '--bogus'"},
       {{CUETRACK_APP_BIN, "--config", "9.9"}, 1, "--config 9.9: unknown preset"},
       {{CUETRACK_APP_BIN, "--serial", "/dev/null", "--baud", "300"}, 1, "--baud 300"},
+      {{CUETRACK_APP_BIN, "--baud", "1234", "--frames", "2"}, 1, "--baud 1234"},
       {{CUETRACK_APP_BIN, "--source", "synth:nosuchscene"}, 2, "synth:nosuchscene"},
       {{CUETRACK_APP_BIN, "--serial", "/nonexistent/tty"}, 3, "/nonexistent/tty: cannot open"},
       {{CUETRACK_APP_BIN, "--out", "/dev/full", "--frames", "2"}, 3, "/dev/full"},

@@ -28,7 +28,9 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     case ParseResult::Run:
       break;
   }
-  if (opt.serialPath && !platform::SerialPort::baudSupported(opt.baud)) {
+  // Refused even without --serial: a typo here would otherwise surface only on the
+  // day the port is added.
+  if (!platform::SerialPort::baudSupported(opt.baud)) {
     std::snprintf(err, sizeof err, "--baud %d: unsupported (9600..921600, see --help)", opt.baud);
     reporter.report(err);
     return kExitUsage;
