@@ -136,6 +136,8 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
   _motion2d.scaleNoise = _config.scaleNoise2d;
   _motion2d.aspectNoise = _config.aspectNoise2d;
   _motion3d.sizeNoise = _config.adaptCylinderSize ? _config.cylinderSizeNoise : 0.f;
+  _sizeFilter.configure(_config.sizeGain, _config.sizeRateGain);
+  _templateAnchor.configure(TemplateAnchor::paramsOf(_config));
   reset();
 }
 
@@ -292,112 +294,6 @@ void Tracker::refineSearchWindows(int n, const PixelRect& roi) {
   }
 }
 
-bool Tracker::grayTemplate(const Box& win, float* out) {
-  // Mean grey of each of kPatchSize^2 cells of the window (each at least one pixel), grey only:
-  // 25 windows a frame, so the other channels are not worth reading.
-  const FrameTables t = _channels.tables();
-  int xs[kPatchSize + 1], ys[kPatchSize + 1];
-  const float ox = win.x - static_cast<float>(t.originX);
-  const float oy = win.y - static_cast<float>(t.originY);
-  for (int i = 0; i <= kPatchSize; ++i) {
-    const float f = static_cast<float>(i) / static_cast<float>(kPatchSize);
-    const int x = fmath::roundToInt(ox + f * win.w), y = fmath::roundToInt(oy + f * win.h);
-    xs[i] = x < 0 ? 0 : (x > t.width ? t.width : x);
-    ys[i] = y < 0 ? 0 : (y > t.height ? t.height : y);
-  }
-  constexpr int kN = kPatchSize * kPatchSize;
-  float mean = 0.f;
-  for (int j = 0; j < kPatchSize; ++j) {
-    int y0 = ys[j], y1 = ys[j + 1];
-    if (y1 <= y0) {
-      if (y0 >= t.height) y0 = t.height - 1;
-      y1 = y0 + 1;
-    }
-    for (int i = 0; i < kPatchSize; ++i) {
-      int x0 = xs[i], x1 = xs[i + 1];
-      if (x1 <= x0) {
-        if (x0 >= t.width) x0 = t.width - 1;
-        x1 = x0 + 1;
-      }
-      const float v = detail::rect(t.gray, t.stride, x0, y0, x1, y1) /
-                      static_cast<float>((x1 - x0) * (y1 - y0));
-      out[j * kPatchSize + i] = v;
-      mean += v;
-    }
-  }
-  mean /= static_cast<float>(kN);
-  float ss = 0.f;
-  for (int i = 0; i < kN; ++i) {
-    out[i] -= mean;
-    ss += out[i] * out[i];
-  }
-  if (!(ss > 1e-3f)) return false;
-  const float inv = 1.f / fmath::sqrtf(ss);
-  for (int i = 0; i < kN; ++i) out[i] *= inv;
-  return true;
-}
-
-float Tracker::templateMatch(const Box& win) {
-  if (!grayTemplate(win, _probeGray)) return -2.f;
-  float ncc = 0.f;
-  for (int q = 0; q < kPatchSize * kPatchSize; ++q) ncc += _probeGray[q] * _anchorGray[q];
-  return ncc;
-}
-
-Box Tracker::templateScale(const Box& est) {
-  int k = _config.templateScaleSteps;
-  if (k > kMaxTemplateScaleSteps) k = kMaxTemplateScaleSteps;
-  const int side = 2 * k + 1;
-  const float cx = est.x + 0.5f * est.w, cy = est.y + 0.5f * est.h;
-  float best = -2.f;
-  int bi = k, bj = k;
-  for (int j = 0; j < side; ++j) {
-    const float h = est.h * fmath::fastExp(_config.templateScaleStep * static_cast<float>(j - k));
-    for (int i = 0; i < side; ++i) {
-      const float w = est.w * fmath::fastExp(_config.templateScaleStep * static_cast<float>(i - k));
-      const float ncc = templateMatch(Box{cx - 0.5f * w, cy - 0.5f * h, w, h});
-      if (ncc > best) {
-        best = ncc;
-        bi = i;
-        bj = j;
-      }
-    }
-  }
-  // A poor best match: the target has turned, changed or is occluded; no information.
-  if (best < _config.templateMinNcc) return est;
-  const float g = _config.templateGain * _config.templateScaleStep;
-  const float w = est.w * fmath::fastExp(g * static_cast<float>(bi - k));
-  const float h = est.h * fmath::fastExp(g * static_cast<float>(bj - k));
-  float ncx = cx, ncy = cy;
-  if (_config.templateShiftStep > 0.f) {
-    // The best size's template, shifted by -2..2 steps of templateShiftStep of its side
-    // along each axis: the centre the learnt positives drift from.
-    const float bw = est.w * fmath::fastExp(_config.templateScaleStep * static_cast<float>(bi - k));
-    const float bh = est.h * fmath::fastExp(_config.templateScaleStep * static_cast<float>(bj - k));
-    const float stepX = _config.templateShiftStep * bw, stepY = _config.templateShiftStep * bh;
-    float bestShift = -2.f;
-    int si = 0, sj = 0;
-    for (int dj = -2; dj <= 2; ++dj) {
-      for (int di = -2; di <= 2; ++di) {
-        const float x = cx + stepX * static_cast<float>(di) - 0.5f * bw;
-        const float y = cy + stepY * static_cast<float>(dj) - 0.5f * bh;
-        // No shift is the ladder's best box: its match is already known.
-        const float ncc = di == 0 && dj == 0 ? best : templateMatch(Box{x, y, bw, bh});
-        if (ncc > bestShift) {
-          bestShift = ncc;
-          si = di;
-          sj = dj;
-        }
-      }
-    }
-    if (bestShift >= _config.templateMinNcc) {
-      ncx += _config.templateShiftGain * stepX * static_cast<float>(si);
-      ncy += _config.templateShiftGain * stepY * static_cast<float>(sj);
-    }
-  }
-  return Box{ncx - 0.5f * w, ncy - 0.5f * h, w, h};
-}
-
 void Tracker::addExample(const Box& win, bool positive) {
   const int slot = _set.add(_channels.tables(), win, positive);
   _cache.refreshExample(slot, _pool, _set);
@@ -548,9 +444,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _lastEstimate = q;
   _depthRefMm = q.p[2];
   _lastBox = b;
-  _logSize[0] = fmath::fastLog(b.w);
-  _logSize[1] = fmath::fastLog(b.h);
-  _logSizeRate[0] = _logSizeRate[1] = 0.f;
+  _sizeFilter.reset(b);
 
   const PixelRect roi = clipBox(grow(b, kNegativeRange + 0.6f), _imageW, _imageH);
   _channels.compute(frame, roi, _depthFeatures || _is3d);
@@ -559,8 +453,8 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     return InitError::BoxTooSmall;  // cannot happen with kMaxPoolFeatures (static_assert-backed)
   _set.reset(_config.numTrainingExamples, _config.initialPositives);
   addExample(b, true);  // slot 0: the anchor
-  _haveTemplate = !_is3d && _config.scaleAnchor2d && _config.templateScaleSteps > 0 &&
-                  grayTemplate(b, _anchorGray);
+  _templateAnchor.clear();
+  if (!_is3d && _config.scaleAnchor2d) _templateAnchor.capture(_channels.tables(), b);
   for (int i = 1; i < _config.initialPositives; ++i) {
     const float s = fmath::fastExp(0.03f * _rng.gaussian());
     const Box j{b.x + 0.03f * b.w * _rng.gaussian(), b.y + 0.03f * b.h * _rng.gaussian(), b.w * s,
@@ -777,21 +671,9 @@ TrackResult Tracker::update(const Frame& frame) {
       c = estBox.empty() ? -1.f : _strong.evaluate(_channels.tables(), estBox);
     }
   }
-  if (_haveTemplate && !_is3d && !estBox.empty() && !wasLost) estBox = templateScale(estBox);
-  if (!_is3d && _config.sizeGain < 1.f && !estBox.empty()) {
-    // The estimate's size jitters from frame to frame, the target's changes smoothly:
-    // an alpha-beta filter on ln w and ln h (its rate term follows a steady zoom).
-    float side[2] = {estBox.w, estBox.h};
-    for (int a = 0; a < 2; ++a) {
-      const float predicted = _logSize[a] + _logSizeRate[a];
-      const float residual = fmath::fastLog(side[a]) - predicted;
-      _logSize[a] = predicted + _config.sizeGain * residual;
-      _logSizeRate[a] += _config.sizeRateGain * residual;
-      side[a] = fmath::fastExp(_logSize[a]);
-    }
-    estBox = Box{estBox.x + 0.5f * (estBox.w - side[0]), estBox.y + 0.5f * (estBox.h - side[1]),
-                 side[0], side[1]};
-  }
+  if (_templateAnchor.active() && !_is3d && !estBox.empty() && !wasLost)
+    estBox = _templateAnchor.correct(_channels.tables(), estBox);
+  if (!_is3d && _sizeFilter.enabled() && !estBox.empty()) estBox = _sizeFilter.filter(estBox);
   float concentration = 0.f, wsum = 0.f;
   for (int i = 0; i < n; ++i) {
     concentration += w[i] * overlap(_boxes[i], estBox);

@@ -17,6 +17,7 @@ namespace {
 constexpr uint64_t kGolden21 = 9047769716938459532ULL;
 constexpr uint64_t kGolden11 = 6734650756926583114ULL;
 constexpr uint64_t kGoldenBest = 8397629898189242289ULL;
+constexpr uint64_t kGoldenBest2d = 2044739742992780778ULL;  // best on RGB alone: the 2D fallback
 
 Tracker tracker;  // large: static storage
 test::MovingSquare scene;
@@ -173,10 +174,12 @@ TEST_CASE("tracks are identical on every platform", "[core][tracker][golden]") {
   const RunStats a = run(presetConfig(Preset::Test2_1), 99, 12, true);
   const RunStats b = run(presetConfig(Preset::Test1_1), 99, 12, false);
   const RunStats c = run(presetConfig(Preset::Best), 99, 12, true);
-  INFO("hashes " << a.hash << " " << b.hash << " " << c.hash);
+  const RunStats d = run(presetConfig(Preset::Best), 99, 12, false);
+  INFO("hashes " << a.hash << " " << b.hash << " " << c.hash << " " << d.hash);
   REQUIRE(a.hash == kGolden21);
   REQUIRE(b.hash == kGolden11);
   REQUIRE(c.hash == kGoldenBest);
+  REQUIRE(d.hash == kGoldenBest2d);
 }
 
 TEST_CASE("reset returns to idle and keeps the configuration", "[core][tracker]") {

@@ -18,8 +18,10 @@
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/SizeFilter.hpp"
 #include "cuetrack/core/SizeMeasure.hpp"
 #include "cuetrack/core/StrongClassifier.hpp"
+#include "cuetrack/core/TemplateAnchor.hpp"
 #include "cuetrack/core/TrackResult.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
 #include "cuetrack/core/TrainingSet.hpp"
@@ -88,13 +90,6 @@ class Tracker {
                      float* surfaceMm);
   // At init: how the user's box relates to the silhouette measured in it.
   void calibrateSilhouette(const Frame& frame, const Box& b, float diameterMm);
-  // 2D: the estimate's size, then its centre, nudged towards the best match of the init
-  // box's template.
-  Box templateScale(const Box& est);
-  // NCC of `win`'s grey cells with the init template; -2 when `win` is flat.
-  float templateMatch(const Box& win);
-  // Zero-mean, unit-norm grey cells of `win` into out (kPatchSize^2); false if flat.
-  bool grayTemplate(const Box& win, float* out);
 
   TrackerConfig _config{};
   uint64_t _seed = 0;
@@ -112,8 +107,8 @@ class Tracker {
   CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
   Box _lastBox{};
-  float _logSize[2] = {0.f, 0.f};      // 2D: smoothed ln w, ln h of the estimate [ln px]
-  float _logSizeRate[2] = {0.f, 0.f};  // ... and their rates [per frame]
+  SizeFilter2d _sizeFilter{};      // 2D: the estimate's size, smoothed
+  TemplateAnchor _templateAnchor;  // 2D, scaleAnchor2d: the init box's grey template
   Particle _lastEstimate{};
   int _lostFrames = 0;      // lost detection (beyond the paper): frames since declared lost
   float _depthRefMm = 0.f;  // ... 3D: depth of the last confirmed estimate [mm]
@@ -131,9 +126,6 @@ class Tracker {
   uint16_t _order[kMaxParticles];  // scoring order: particle indices by band
   uint8_t _inMode[kMaxParticles];  // modeGuard: particles in the best particle's mode
   float _featureErrors[kMaxPoolFeatures];
-  float _anchorGray[kPatchSize * kPatchSize] = {};  // the init box's grey template
-  float _probeGray[kPatchSize * kPatchSize] = {};
-  bool _haveTemplate = false;
   // adaptCylinderSize: per axis, the init box / measured extent, and the box centre's offset
   // from the measured midpoint as a fraction of the side (an axis the init frame could not
   // measure plausibly stays fixed).
