@@ -1,13 +1,9 @@
 #include "cuetrack/core/Tracker.hpp"
 
-#include "cuetrack/core/SizeMeasure.hpp"
-
 namespace cuetrack {
 
 namespace {
-constexpr float kMinBoxPx = 8.f;        // smallest window side [px]
-constexpr float kNegativeRange = 1.5f;  // negatives within +-1.5 window sizes
-constexpr float kNegativeMaxOverlap = 0.3f;
+constexpr float kMinBoxPx = 8.f;    // smallest window side [px]
 constexpr float kRoiMargin = 1.6f;  // ROI: particle boxes + this x mean size per side
 constexpr float kLostSpread = 3.f;  // motion noise gain while lost
 // Re-acquisition while lost: every kSearchEvery-th particle is drawn anew each frame,
@@ -23,17 +19,6 @@ constexpr float kSearchInside = 0.8f;     // while lost, windows must lie this m
 constexpr float kRefineStep = 0.12f;
 constexpr int kRefineSteps = 6;
 constexpr float kDefaultDtS = 1.f / 30.f;
-// adaptCylinderSize: the silhouette is the depth within surface +- (D/2 + m) (a face
-// seen obliquely reaches in front of the centre's depth as well as behind it), with
-// m = this x the surface depth (Kinect depth noise grows with depth); per frame D and
-// H move at most kMaxSizeStep (ln), the centre kMaxCentreStep x the window's side.
-constexpr float kSlabMargin = 0.05f;
-constexpr float kMaxSizeStep = 0.03f;
-constexpr float kMaxCentreStep = 0.03f;
-// ... and an axis adapts only if, at init, the box and the measured extent agree within
-// this factor (SilhouetteCalibration).
-constexpr float kMaxCalibration = 1.6f;
-
 float frameDtS(uint64_t last, uint64_t now) {
   if (now <= last) return kDefaultDtS;
   const float dt = static_cast<float>(now - last) * 1e-6f;
@@ -49,38 +34,6 @@ PixelRect unite(const PixelRect& a, const PixelRect& b) {
   r.x1 = a.x1 > b.x1 ? a.x1 : b.x1;
   r.y1 = a.y1 > b.y1 ? a.y1 : b.y1;
   return r;
-}
-
-// ln step toward `ratio`, `gain` of the way, at most kMaxSizeStep; as a factor.
-float sizeStep(float ratio, float gain) {
-  if (!(ratio > 0.f)) return 1.f;
-  return fmath::fastExp(fmath::clampf(gain * fmath::fastLog(ratio), -kMaxSizeStep, kMaxSizeStep));
-}
-
-// One axis of the init box against the silhouette's run on it: the ratio side / run and
-// the box centre's offset from the run's midpoint (a fraction of the side). An axis follows
-// its measurement only if they agree within kMaxCalibration: otherwise the slab does not
-// show the target (it merges with its support, or is mostly holes) and that side stays
-// fixed (paper).
-Tracker::AxisCalibration calibrateAxis(float sidePx, float centrePx, float runPx, float runMidPx) {
-  Tracker::AxisCalibration a;
-  const float ratio = sidePx / runPx;
-  if (ratio * kMaxCalibration >= 1.f && ratio <= kMaxCalibration) {
-    a.valid = true;
-    a.ratio = ratio;
-    a.offset = (centrePx - runMidPx) / sidePx;
-  }
-  return a;
-}
-
-// Scales D and H, moving the centre along its ray so the front surface stays put (the
-// depth correction would otherwise read the move as a velocity).
-void rescaleCylinder(Particle& q, float fD, float fH) {
-  const float zc = q.p[2] + 0.5f * q.size[0] * (fD - 1.f);
-  const float s = zc / q.p[2];
-  for (int a = 0; a < 3; ++a) q.p[a] *= s;
-  q.size[0] *= fD;
-  q.size[1] *= fH;
 }
 
 Box grow(const Box& b, float by) {
@@ -138,6 +91,8 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
   _motion3d.sizeNoise = _config.adaptCylinderSize ? _config.cylinderSizeNoise : 0.f;
   _sizeFilter.configure(_config.sizeGain, _config.sizeRateGain);
   _templateAnchor.configure(TemplateAnchor::paramsOf(_config));
+  _sizer.configure(_config.cylinderSizeGain, _config.cylinderCentreGain);
+  _negatives.configure(NegativeSampler::paramsOf(_config));
   reset();
 }
 
@@ -300,78 +255,17 @@ void Tracker::addExample(const Box& win, bool positive) {
 }
 
 void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
-  const float rx0 = static_cast<float>(roi.x0), ry0 = static_cast<float>(roi.y0);
-  const float rx1 = static_cast<float>(roi.x1), ry1 = static_cast<float>(roi.y1);
-  for (int k = 0; k < count; ++k) {
-    // Every other negative is a near miss (shifted and/or rescaled, overlap < 0.5) so
-    // the classifier learns to localise; the rest are background within the range.
-    const bool near = (k & 1) == 0;
-    const float maxOverlap = near ? _config.nearNegativeOverlap : kNegativeMaxOverlap;
-    Box b = around;
-    if (near && (k & 2) == 0 && _config.shrunkNegativeScale > 0.f) {
-      // A window shrunk or grown along one axis or both: teaches that the target's
-      // border belongs at the window's border (a window inside the target otherwise
-      // scores as well as the right one, and the estimate shrinks). Shrunk or grown
-      // (1/scale) alike, so neither direction is favoured. In 2D, anchored at the
-      // estimate's start, centre or end along each axis: a window on the target's most
-      // distinctive corner (a panda's head) otherwise outscores the whole target, and the
-      // size drifts there (docs/algorithm.md). In 3D the cylinder and the depth set the size.
-      const float sc =
-          _rng.below(2) == 0 ? _config.shrunkNegativeScale : 1.f / _config.shrunkNegativeScale;
-      const uint32_t mode = _rng.below(3);
-      const float sw = mode == 1 ? 1.f : sc, sh = mode == 0 ? 1.f : sc;
-      float ax = 0.5f, ay = 0.5f;
-      if (!_is3d && _config.anchoredNegatives2d) {
-        ax = 0.5f * static_cast<float>(_rng.below(3));
-        ay = 0.5f * static_cast<float>(_rng.below(3));
-      }
-      b = Box{around.x + ax * around.w * (1.f - sw), around.y + ay * around.h * (1.f - sh),
-              around.w * sw, around.h * sh};
-      addExample(b, false);
-      continue;
-    }
-    if (near && (k & 2) != 0 && _config.shiftedNegativeFraction > 0.f) {
-      // The estimate shifted along one axis, either way: pins the position likewise.
-      const float d = (_rng.below(2) == 0 ? -1.f : 1.f) * _config.shiftedNegativeFraction;
-      const bool alongX = _rng.below(2) == 0;
-      b = Box{around.x + (alongX ? d * around.w : 0.f), around.y + (alongX ? 0.f : d * around.h),
-              around.w, around.h};
-      addExample(b, false);
-      continue;
-    }
-    for (int attempt = 0; attempt < 12; ++attempt) {
-      const float range = near ? 0.6f : kNegativeRange;
-      const float cx = around.x + 0.5f * around.w + _rng.uniform(-range, range) * around.w;
-      const float cy = around.y + 0.5f * around.h + _rng.uniform(-range, range) * around.h;
-      float w = around.w, h = around.h;
-      bool sized = false;
-      if (_is3d && !near) {
-        // The size the target would have at the depth found there (paper 2.1).
-        const Box probe{cx - 2.f, cy - 2.f, 4.f, 4.f};
-        const float d = _channels.meanDepthMm(clipBox(probe, _imageW, _imageH));
-        if (d > 0.f) {
-          const float z = d + 0.5f * _lastEstimate.size[0];
-          w = _k.fx * _lastEstimate.size[0] / z;
-          h = _k.fy * _lastEstimate.size[1] / z;
-          sized = true;
-        }
-      }
-      if (!sized) {
-        const float s = fmath::fastExp((near ? 0.4f : 0.15f) * _rng.gaussian());
-        const float a = near ? fmath::fastExp(0.25f * _rng.gaussian()) : 1.f;  // aspect
-        w *= s * a;
-        h *= s / a;
-      }
-      if (w > rx1 - rx0) w = rx1 - rx0;
-      if (h > ry1 - ry0) h = ry1 - ry0;
-      if (w < kMinBoxPx) w = kMinBoxPx;
-      if (h < kMinBoxPx) h = kMinBoxPx;
-      b = Box{fmath::clampf(cx - 0.5f * w, rx0, rx1 - w),
-              fmath::clampf(cy - 0.5f * h, ry0, ry1 - h), w, h};
-      if (overlap(b, around) < maxOverlap) break;
-    }
-    addExample(b, false);
+  NegativeSampler::Cylinder cylinder;
+  if (_is3d) {
+    cylinder.channels = &_channels;
+    cylinder.k = _k;
+    cylinder.diameterMm = _lastEstimate.size[0];
+    cylinder.heightMm = _lastEstimate.size[1];
+    cylinder.imageW = _imageW;
+    cylinder.imageH = _imageH;
   }
+  for (int k = 0; k < count; ++k)
+    addExample(_negatives.next(k, around, roi, _is3d ? &cylinder : nullptr, _rng), false);
 }
 
 InitError Tracker::init(const Frame& frame, const Box& box) {
@@ -446,7 +340,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _lastBox = b;
   _sizeFilter.reset(b);
 
-  const PixelRect roi = clipBox(grow(b, kNegativeRange + 0.6f), _imageW, _imageH);
+  const PixelRect roi = clipBox(grow(b, NegativeSampler::kRange + 0.6f), _imageW, _imageH);
   _channels.compute(frame, roi, _depthFeatures || _is3d);
 
   if (!_pool.build(_config.useGray, _depthFeatures, _config.useColour, _config.sampling, _rng))
@@ -467,76 +361,14 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _strong.train(_pool, _cache, _set, _numWeak, _featureErrors, _config.boostCandidates,
                 _config.anchorWeight, _config.boostRefreshRounds);
 
-  _silhouette = SilhouetteCalibration{};
+  _sizer.clear();
   if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
-    calibrateSilhouette(frame, b, q.size[0]);
+    _sizer.calibrate(frame, _channels, b, q.size[0]);
   _filter.setSize(_config.numParticles);
   _filter.fill(q);
   _lastTimeUs = frame.timeUs;
   _state = TrackState::Tracking;
   return InitError::None;
-}
-
-bool Tracker::measureTarget(const Frame& frame, const Box& b, float diameterMm, SilhouetteExtent* e,
-                            float* surfaceMm) {
-  if (b.empty()) return false;
-  // The surface depth as the depth correction reads it (inner 10% of the window).
-  const float iw = b.w * 0.1f < 2.f ? 2.f : b.w * 0.1f, ih = b.h * 0.1f < 2.f ? 2.f : b.h * 0.1f;
-  const Box inner{b.x + 0.5f * (b.w - iw), b.y + 0.5f * (b.h - ih), iw, ih};
-  *surfaceMm = _channels.meanDepthMm(clipBox(inner, _imageW, _imageH));
-  if (!(*surfaceMm > 0.f)) return false;
-  const float halfSlabMm = 0.5f * diameterMm + kSlabMargin * *surfaceMm;
-  *e = measureSilhouette(frame.depthMm, b, *surfaceMm - halfSlabMm, *surfaceMm + halfSlabMm);
-  return e->hasWidth || e->hasHeight;
-}
-
-void Tracker::calibrateSilhouette(const Frame& frame, const Box& b, float diameterMm) {
-  _silhouette = SilhouetteCalibration{};
-  SilhouetteExtent e;
-  float surfaceMm = 0.f;
-  if (!measureTarget(frame, b, diameterMm, &e, &surfaceMm)) return;
-  if (e.hasWidth) _silhouette.x = calibrateAxis(b.w, b.x + 0.5f * b.w, e.widthPx, e.centreXPx);
-  if (e.hasHeight) _silhouette.y = calibrateAxis(b.h, b.y + 0.5f * b.h, e.heightPx, e.centreYPx);
-}
-
-bool Tracker::followTargetSize(const Frame& frame, Particle& est) {
-  const Box b = particleBox(est);
-  SilhouetteExtent e;
-  float surfaceMm = 0.f;
-  if (!measureTarget(frame, b, est.size[0], &e, &surfaceMm)) return false;
-  // The measured extent in the init box's terms: the user's box may include parts the
-  // measurement misses (a chair's or a person's legs: the middle columns see the floor
-  // between them) or background margin; the init frame fixed that ratio and offset.
-  const SilhouetteCalibration& cal = _silhouette;
-  const float gain = _config.cylinderSizeGain, centreGain = _config.cylinderCentreGain;
-  float fD = 1.f, fH = 1.f, du = 0.f, dv = 0.f;  // size factors, centre shifts [px]
-  const float widthPx = e.widthPx * cal.x.ratio;
-  if (e.hasWidth && cal.x.valid && widthPx < _k.fx) {
-    fD = sizeStep(cylinderDiameterMm(widthPx, surfaceMm, _k) / est.size[0], gain);
-    const float midPx = e.centreXPx + cal.x.offset * b.w;
-    du = fmath::clampf(centreGain * (midPx - (b.x + 0.5f * b.w)), -kMaxCentreStep * b.w,
-                       kMaxCentreStep * b.w);
-  }
-  if (e.hasHeight && cal.y.valid) {
-    const float heightMm =
-        cylinderHeightMm(e.heightPx * cal.y.ratio, surfaceMm, est.size[0] * fD, _k);
-    fH = sizeStep(heightMm / est.size[1], gain);
-    const float midPx = e.centreYPx + cal.y.offset * b.h;
-    dv = fmath::clampf(centreGain * (midPx - (b.y + 0.5f * b.h)), -kMaxCentreStep * b.h,
-                       kMaxCentreStep * b.h);
-  }
-  if (fD == 1.f && fH == 1.f && du == 0.f && dv == 0.f) return false;
-  // The same change for every particle (its spread stays), velocities untouched: a
-  // shift of du px is du z / fx mm at depth z.
-  const float xPerZ = du / _k.fx, yPerZ = dv / _k.fy;
-  const int n = _filter.size();
-  for (int i = -1; i < n; ++i) {
-    Particle& q = i < 0 ? est : _filter[i];
-    rescaleCylinder(q, fD, fH);
-    q.p[0] += xPerZ * q.p[2];
-    q.p[1] += yPerZ * q.p[2];
-  }
-  return true;
 }
 
 void Tracker::learn(const Box& estimate, const PixelRect& roi) {
@@ -702,7 +534,7 @@ TrackResult Tracker::update(const Frame& frame) {
       _gate.open(confidence, concentration, _state)) {
     // Only on frames fit to learn: the estimate is then on the target.
     if (_is3d && _config.adaptCylinderSize && _config.cylinderSizeGain > 0.f && frame.hasDepth() &&
-        followTargetSize(frame, est))
+        _sizer.follow(frame, _channels, _k, particleBox(est), est, _filter))
       estBox = particleBox(est);
     _lastEstimate = est;
     learn(clampToImage(estBox), roi);

@@ -12,14 +12,15 @@
 #include <cstdint>
 
 #include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/CylinderSizer.hpp"
 #include "cuetrack/core/FeaturePool.hpp"
 #include "cuetrack/core/Frame.hpp"
 #include "cuetrack/core/Gate.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
+#include "cuetrack/core/NegativeSampler.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/SizeFilter.hpp"
-#include "cuetrack/core/SizeMeasure.hpp"
 #include "cuetrack/core/StrongClassifier.hpp"
 #include "cuetrack/core/TemplateAnchor.hpp"
 #include "cuetrack/core/TrackResult.hpp"
@@ -63,13 +64,6 @@ class Tracker {
   const StrongClassifier& classifier() const { return _strong; }
   const ParticleFilter& particles() const { return _filter; }
 
-  // adaptCylinderSize's calibration of one axis (Tracker.cpp, calibrateAxis).
-  struct AxisCalibration {
-    bool valid = false;
-    float ratio = 1.f;   // box side / measured extent
-    float offset = 0.f;  // (box centre - measured midpoint) / side
-  };
-
  private:
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
   Box particleBox(const Particle& q) const;
@@ -82,14 +76,6 @@ class Tracker {
   // refineSearch: hill-climbs the best scored fresh search windows (scores and particles
   // updated in place); windows stay inside `roi`, where the tables are.
   void refineSearchWindows(int n, const PixelRect& roi);
-  // adaptCylinderSize: moves D, H and the centre of est and every particle toward the
-  // silhouette measured in depth; false when nothing was measured.
-  bool followTargetSize(const Frame& frame, Particle& est);
-  // The silhouette around window b (slab from the surface depth and diameterMm).
-  bool measureTarget(const Frame& frame, const Box& b, float diameterMm, SilhouetteExtent* e,
-                     float* surfaceMm);
-  // At init: how the user's box relates to the silhouette measured in it.
-  void calibrateSilhouette(const Frame& frame, const Box& b, float diameterMm);
 
   TrackerConfig _config{};
   uint64_t _seed = 0;
@@ -126,13 +112,8 @@ class Tracker {
   uint16_t _order[kMaxParticles];  // scoring order: particle indices by band
   uint8_t _inMode[kMaxParticles];  // modeGuard: particles in the best particle's mode
   float _featureErrors[kMaxPoolFeatures];
-  // adaptCylinderSize: per axis, the init box / measured extent, and the box centre's offset
-  // from the measured midpoint as a fraction of the side (an axis the init frame could not
-  // measure plausibly stays fixed).
-  struct SilhouetteCalibration {
-    AxisCalibration x, y;
-  };
-  SilhouetteCalibration _silhouette{};
+  NegativeSampler _negatives{};
+  CylinderSizer _sizer{};  // adaptCylinderSize: D, H and the centre follow the depth silhouette
   uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
 };
 
