@@ -382,21 +382,9 @@ void Tracker::learn(const Box& estimate, const PixelRect& roi) {
                 _config.anchorWeight, _config.boostRefreshRounds);
 }
 
-TrackResult Tracker::update(const Frame& frame) {
-  TrackResult r;
-  r.state = _state;
-  if (_state == TrackState::Idle) return r;
-  r.box = _lastBox;
-  if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
-  const uint64_t t0 = now();
-  const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
-  _lastTimeUs = frame.timeUs;
-  const bool wasLost = _state == TrackState::Lost;
+PixelRect Tracker::predict(float dtS, bool wasLost) {
   const float spread = wasLost ? kLostSpread : 1.f;
   const int n = _filter.size();
-  if (wasLost) ++_lostFrames;
-
-  // Predict, and find the region the particles (and negatives around them) can touch.
   PixelRect roi{};
   float meanW = 0.f, meanH = 0.f;
   for (int i = 0; i < n; ++i) {
@@ -428,19 +416,11 @@ TrackResult Tracker::update(const Frame& frame) {
                     static_cast<float>(roi.height()) + 2.f * kRoiMargin * meanH},
                 _imageW, _imageH);
   if (roi.width() < 2 || roi.height() < 2) roi = PixelRect{0, 0, _imageW, _imageH};
-  _channels.compute(frame, roi, _depthFeatures || _is3d);
-  const uint64_t t1 = now();
+  return roi;
+}
 
-  // 3D: pull each particle onto the measured surface (paper eq. 2).
-  if (_is3d && frame.hasDepth()) {
-    for (int i = 0; i < n; ++i) {
-      if (correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH))
-        _boxes[i] = particleBox(_filter[i]);
-    }
-  }
-  const uint64_t t2 = now();
-
-  // Weigh: w = exp(lambda (c - c_max)).
+void Tracker::score(const PixelRect& roi, bool wasLost) {
+  const int n = _filter.size();
   for (int i = 0; i < n; ++i) {
     const Box& b = _boxes[i];
     _valid[i] = !b.empty() && b.w >= 4.f && b.h >= 4.f && b.x + b.w > 0.f && b.y + b.h > 0.f &&
@@ -472,24 +452,28 @@ TrackResult Tracker::update(const Frame& frame) {
   // resampling. The best few climb to their peak first (docs/algorithm.md).
   if (wasLost && _config.refineSearch && _config.searchRefineWindows > 0)
     refineSearchWindows(n, roi);
+}
+
+Tracker::Estimate Tracker::estimate(bool wasLost) {
+  // Weigh: w = exp(lambda (c - c_max)).
+  const int n = _filter.size();
   float cMax = -2.f;
   for (int i = 0; i < n; ++i)
     if (_scores[i] > cMax) cMax = _scores[i];
   float* w = _filter.weights();
   for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(_config.weightGain * (_scores[i] - cMax));
 
-  Particle est;
-  Box estBox;
+  Estimate e;
   float c;
   if (_config.estimator == Estimator::MaxWeight) {
     const int best = _filter.argmaxWeight();
-    est = _filter[best];
-    estBox = _boxes[best];
+    e.particle = _filter[best];
+    e.box = _boxes[best];
     c = _scores[best];
   } else {
-    est = _filter.weightedMean();
-    estBox = particleBox(est);
-    c = estBox.empty() ? -1.f : _strong.evaluate(_channels.tables(), estBox);
+    e.particle = _filter.weightedMean();
+    e.box = particleBox(e.particle);
+    c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
     if (_config.modeGuard && c < cMax - _config.modeGuardMargin &&
         0.5f * (cMax + 1.f) >= _config.modeGuardMinConfidence) {
       // The mean scores far below a confident best particle: the cloud has split (the
@@ -498,23 +482,25 @@ TrackResult Tracker::update(const Frame& frame) {
       // mean's low score is what tells lost detection it is gone.)
       const Box top = _boxes[_filter.argmaxWeight()];
       for (int i = 0; i < n; ++i) _inMode[i] = overlap(_boxes[i], top) >= 0.5f ? 1 : 0;
-      est = _filter.weightedMean(_inMode);
-      estBox = particleBox(est);
-      c = estBox.empty() ? -1.f : _strong.evaluate(_channels.tables(), estBox);
+      e.particle = _filter.weightedMean(_inMode);
+      e.box = particleBox(e.particle);
+      c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
     }
   }
-  if (_templateAnchor.active() && !_is3d && !estBox.empty() && !wasLost)
-    estBox = _templateAnchor.correct(_channels.tables(), estBox);
-  if (!_is3d && _sizeFilter.enabled() && !estBox.empty()) estBox = _sizeFilter.filter(estBox);
+  if (_templateAnchor.active() && !_is3d && !e.box.empty() && !wasLost)
+    e.box = _templateAnchor.correct(_channels.tables(), e.box);
+  if (!_is3d && _sizeFilter.enabled() && !e.box.empty()) e.box = _sizeFilter.filter(e.box);
   float concentration = 0.f, wsum = 0.f;
   for (int i = 0; i < n; ++i) {
-    concentration += w[i] * overlap(_boxes[i], estBox);
+    concentration += w[i] * overlap(_boxes[i], e.box);
     wsum += w[i];
   }
-  concentration = wsum > 0.f ? concentration / wsum : 0.f;
-  const float confidence = 0.5f * (c + 1.f);
-  const uint64_t t3 = now();
+  e.concentration = wsum > 0.f ? concentration / wsum : 0.f;
+  e.confidence = 0.5f * (c + 1.f);
+  return e;
+}
 
+bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi) {
   bool occluded = false;
   if (_config.lostDetection) {
     // 3D: the estimate jumped well in front of or behind where the target was last
@@ -522,28 +508,63 @@ TrackResult Tracker::update(const Frame& frame) {
     // or on the background (either can look enough like the target to keep the
     // confidence above the lost threshold). Counts as a miss, and is not learnt.
     const float zRef = _depthRefMm;
+    const Particle& est = e.particle;
     occluded = _is3d && !wasLost && !_lost.onProbation() &&
                (est.p[2] < kDepthJumpRatio * zRef || kDepthJumpRatio * est.p[2] > zRef);
-    _state = _lost.step(_state, occluded ? 0.f : confidence);
+    _state = _lost.step(_state, occluded ? 0.f : e.confidence);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
   }
   // Just found again (on probation): the estimate may be off the target's centre, or
   // on a look-alike; learn only once the detector has confirmed it.
   bool learned = false;
-  if (!estBox.empty() && !occluded && !_lost.onProbation() &&
-      _gate.open(confidence, concentration, _state)) {
+  if (!e.box.empty() && !occluded && !_lost.onProbation() &&
+      _gate.open(e.confidence, e.concentration, _state)) {
     // Only on frames fit to learn: the estimate is then on the target.
     if (_is3d && _config.adaptCylinderSize && _config.cylinderSizeGain > 0.f && frame.hasDepth() &&
-        _sizer.follow(frame, _channels, _k, particleBox(est), est, _filter))
-      estBox = particleBox(est);
-    _lastEstimate = est;
-    learn(clampToImage(estBox), roi);
+        _sizer.follow(frame, _channels, _k, particleBox(e.particle), e.particle, _filter))
+      e.box = particleBox(e.particle);
+    _lastEstimate = e.particle;
+    learn(clampToImage(e.box), roi);
     learned = true;
   }
   // The depth the target was last confirmed at: learnt, or found again (it may have
   // moved in depth while hidden).
   if (learned || (_state == TrackState::Tracking && (wasLost || _lost.onProbation())))
-    _depthRefMm = est.p[2];
+    _depthRefMm = e.particle.p[2];
+  return learned;
+}
+
+TrackResult Tracker::update(const Frame& frame) {
+  TrackResult r;
+  r.state = _state;
+  if (_state == TrackState::Idle) return r;
+  r.box = _lastBox;
+  if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
+  const uint64_t t0 = now();
+  const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
+  _lastTimeUs = frame.timeUs;
+  const bool wasLost = _state == TrackState::Lost;
+  if (wasLost) ++_lostFrames;
+
+  // Predict, and tabulate the region the particles (and negatives around them) can touch.
+  const PixelRect roi = predict(dtS, wasLost);
+  _channels.compute(frame, roi, _depthFeatures || _is3d);
+  const uint64_t t1 = now();
+
+  // 3D: pull each particle onto the measured surface (paper eq. 2).
+  const int n = _filter.size();
+  if (_is3d && frame.hasDepth()) {
+    for (int i = 0; i < n; ++i) {
+      if (correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH))
+        _boxes[i] = particleBox(_filter[i]);
+    }
+  }
+  const uint64_t t2 = now();
+
+  score(roi, wasLost);
+  Estimate e = estimate(wasLost);
+  const uint64_t t3 = now();
+  const bool learned = decide(frame, e, wasLost, roi);
   const uint64_t t4 = now();
 
   _filter.resample(_rng);
@@ -552,15 +573,15 @@ TrackResult Tracker::update(const Frame& frame) {
     // correction gave search particles, so the cloud spreads around where it is.
     for (int i = 0; i < n; ++i) _filter[i].v[0] = _filter[i].v[1] = _filter[i].v[2] = 0.f;
   }
-  if (!estBox.empty()) _lastBox = estBox;
+  if (!e.box.empty()) _lastBox = e.box;
 
   r.state = _state;
   r.box = _lastBox;
-  r.confidence = confidence;
+  r.confidence = e.confidence;
   r.learned = learned;
   if (_is3d) {
     r.hasPosition3d = true;
-    for (int a = 0; a < 3; ++a) r.positionMm[a] = est.p[a];
+    for (int a = 0; a < 3; ++a) r.positionMm[a] = e.particle.p[a];
   }
   if (_clock != nullptr) {
     const uint64_t t5 = now();

@@ -65,6 +65,21 @@ class Tracker {
   const ParticleFilter& particles() const { return _filter; }
 
  private:
+  // One update's estimate: the particle (3D: the cylinder), its window, and what the
+  // update gate and lost detection judge it by.
+  struct Estimate {
+    Particle particle{};
+    Box box{};
+    float confidence = 0.f;     // (c + 1) / 2 at the estimate
+    float concentration = 0.f;  // weighted mean overlap of the particles with it
+  };
+  // update()'s stages, in order.
+  PixelRect predict(float dtS, bool wasLost);      // motion (+ search while lost); the ROI
+  void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
+  Estimate estimate(bool wasLost);                 // weights and the estimate
+  // Lost detection, the update gate and learning; true when learnt.
+  bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi);
+
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
   Box particleBox(const Particle& q) const;
   Box clampToImage(const Box& b) const;
