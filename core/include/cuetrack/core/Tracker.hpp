@@ -41,9 +41,11 @@ enum class InitError : uint8_t {
 };
 const char* toString(InitError e);
 
-// The members are components (particle filter, observation model, feature
-// pool, training set), each a fixed-size class of its own; Tracker only wires
-// them. It is large (MiBs): give it static storage or allocate it once.
+// The members are components (particle filter, observation model, feature pool,
+// training set, negative sampler, update gate and lost detector, and the beyond-the-paper
+// cylinder sizer, template anchor and size filter), each a fixed-size class of its own
+// with its own tests; Tracker wires them and keeps the track's state. It is large
+// (MiBs): give it static storage or allocate it once.
 class Tracker {
  public:
   Tracker();
