@@ -70,7 +70,9 @@ bool correctDepth(Particle& q, const IntegralChannels& ch, const CameraIntrinsic
   if (!(d > 0.f)) return false;
   const float zNew = d + 0.5f * q.size[0];
   const float s = zNew / q.p[2];
-  const float invDt = dtS > 1e-4f ? 1.f / dtS : 0.f;
+  // A frame this soon after the last (a repeated or near-duplicate frame) says nothing
+  // about velocity: move / dt would fling the particle (200 us: 12 m/s on average).
+  const float invDt = dtS >= kMinVelocityDtS ? 1.f / dtS : 0.f;
   for (int a = 0; a < 3; ++a) {
     const float moved = q.p[a] * s;
     q.v[a] += (moved - q.p[a]) * invDt;

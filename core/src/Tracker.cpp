@@ -59,6 +59,8 @@ const char* toString(InitError e) {
       return "no depth (or no valid depth inside the box) for a depth configuration";
     case InitError::NoIntrinsics:
       return "3D state space needs camera intrinsics";
+    case InitError::BoxTooWideFor3d:
+      return "box too wide for the 3D cylinder (w >= fx px)";
   }
   return "unknown error";
 }
@@ -295,6 +297,12 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     bool ok = depthOk;
     if (ok && _is3d && !frame.intrinsics.valid()) {
       if (!_config.fallbackTo2d) return InitError::NoIntrinsics;
+      ok = false;
+    }
+    // The init rule D = w s / (fx - w/2) needs w < 2 fx, and a cylinder whose silhouette
+    // spans fx px or more would be wider than it is far (the size adaptation's bound too).
+    if (ok && _is3d && !(b.w < frame.intrinsics.fx)) {
+      if (!_config.fallbackTo2d) return InitError::BoxTooWideFor3d;
       ok = false;
     }
     if (ok && _is3d && !medianDepthMm(frame, b, &surfaceMm)) ok = false;

@@ -95,6 +95,20 @@ TEST_CASE("depth correction puts particles onto a known plane", "[core][depth]")
     // Velocity corrected by the move / dt.
     for (int a = 0; a < 3; ++a) REQUIRE(q.v[a] == Approx((q.p[a] - before.p[a]) / dt).margin(0.5f));
   }
+  // A repeated frame (200 us later) moves the particle but leaves its velocity: move / dt
+  // would otherwise fling it at metres per second.
+  {
+    Particle q;
+    q.size[0] = 150.f;
+    q.size[1] = 300.f;
+    q.p[2] = 2500.f;
+    q.v[0] = 10.f;
+    REQUIRE(correctDepth(q, channels, f.intrinsics, 2e-4f, W, H));
+    REQUIRE(q.p[2] == Approx(1875.f).epsilon(1e-5));
+    REQUIRE(q.v[0] == 10.f);
+    REQUIRE(q.v[1] == 0.f);
+    REQUIRE(q.v[2] == 0.f);
+  }
   // No valid depth: untouched.
   for (int i = 0; i < W * H; ++i) depth[i] = 0;
   channels.compute(f, PixelRect{0, 0, W, H}, true);

@@ -129,14 +129,26 @@ TEST_CASE("init rejects bad input with a named error", "[core][tracker]") {
   REQUIRE(tracker.init(noK, scene.truth(0)) == InitError::NoIntrinsics);
   REQUIRE(tracker.init(f, scene.truth(0)) == InitError::None);
   REQUIRE(tracker.uses3d());
+  // A box as wide as fx or wider (a wide lens, or intrinsics for another resolution): no
+  // upright cylinder projects so; before, the init rule gave D = inf or D < 0 and a track
+  // of NaNs.
+  Frame wideLens = f;
+  wideLens.intrinsics.fx = 0.9f * scene.truth(0).w;
+  REQUIRE(tracker.init(wideLens, scene.truth(0)) == InitError::BoxTooWideFor3d);
+  tracker.configure(presetConfig(Preset::Best), 1);  // ... or 2D, where it may fall back
+  REQUIRE(tracker.init(wideLens, scene.truth(0)) == InitError::None);
+  REQUIRE_FALSE(tracker.uses3d());
+  const TrackResult wide = tracker.update(scene.render(1, true));
+  REQUIRE(std::isfinite(wide.box.x));
+  REQUIRE(std::isfinite(wide.box.w));
 
   // `best` without depth falls back to 2D RGB.
   tracker.configure(presetConfig(Preset::Best), 1);
   REQUIRE(tracker.init(scene.render(0, false), scene.truth(0)) == InitError::None);
   REQUIRE_FALSE(tracker.uses3d());
   REQUIRE_FALSE(tracker.usesDepthFeatures());
-  for (int i = 0; i < kNumPresets; ++i)
-    REQUIRE(std::strlen(toString(static_cast<InitError>(i))) > 0);
+  for (int i = 0; i <= static_cast<int>(InitError::BoxTooWideFor3d); ++i)
+    REQUIRE(std::strcmp(toString(static_cast<InitError>(i)), "unknown error") != 0);
 }
 
 TEST_CASE("every preset tracks a plainly moving target without allocating", "[core][tracker]") {

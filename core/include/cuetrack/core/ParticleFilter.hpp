@@ -62,6 +62,8 @@ bool keepInView(Particle& q, const CameraIntrinsics& k, int imageW, int imageH);
 // of the projection, move the particle along its viewing ray so its front surface
 // (centre depth - D/2) lies at that depth, and add the move / dt to its velocity.
 // Returns false (particle untouched) when the inner rectangle has no valid depth.
+// Below kMinVelocityDtS (a repeated frame; cameras run at <= 200 Hz) the velocity is kept.
+inline constexpr float kMinVelocityDtS = 0.005f;
 bool correctDepth(Particle& q, const IntegralChannels& ch, const CameraIntrinsics& k, float dtS,
                   int imageW, int imageH);
 

@@ -38,8 +38,9 @@ class StrongClassifier {
   // c(x) for n windows at once; windows with valid[i] == 0 get -1. Boosting often picks
   // a feature more than once, so each distinct feature is evaluated once per window (its
   // table cell kept), then the weak classifiers' values are summed in round order, as
-  // evaluate() does. `order` (optional) is the visiting order of the windows: nearby
-  // windows in turn keep the table rows they read in cache.
+  // evaluate() does, and scaled by 1/M (within an ulp of evaluate()'s sum / M; the two
+  // are only ever compared with margins far above that). `order` (optional) is the visiting order
+  // of the windows: nearby windows in turn keep the table rows they read in cache.
   template <typename U, typename S>
   void evaluateMany(const ChannelTables<U, S>& t, const Box* wins, const uint8_t* valid, int n,
                     float* out, const uint16_t* order = nullptr) const {

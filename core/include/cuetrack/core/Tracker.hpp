@@ -38,6 +38,7 @@ enum class InitError : uint8_t {
   ImageTooLarge,    // larger than kMaxImageWidth x kMaxImageHeight
   NoDepth,          // 3D state space without depth, or no valid depth inside the box
   NoIntrinsics,     // 3D state space without camera intrinsics
+  BoxTooWideFor3d,  // 3D state space, box at least fx wide: no upright cylinder projects so
 };
 const char* toString(InitError e);
 
