@@ -35,10 +35,10 @@ class LostDetector {
   int foundAfter = 2;
   int probationFrames = 8;
   float foundMargin = 0.15f;
-  float typicalRate = 0.1f;  // weight of the latest frame in the running mean
+  float typicalRate = 0.1f;  // weight of the latest frame in the running mean (once warm)
 
   void reset() {
-    _low = _high = _probation = 0;
+    _low = _high = _probation = _typicalCount = 0;
     _typical = 0.f;
   }
   bool onProbation() const { return _probation > 0; }
@@ -56,7 +56,14 @@ class LostDetector {
       return s;
     }
     if (s == TrackState::Tracking) {
-      if (confidence >= foundAbove) _typical += typicalRate * (confidence - _typical);
+      if (confidence >= foundAbove) {
+        // The plain mean until 1 / typicalRate frames are in, then the running mean: from
+        // 0 the running mean would sit low for ~20 frames, and a target lost that early
+        // could be "found" on a look-alike the margin is there to reject.
+        if (_typicalCount < 1000) ++_typicalCount;
+        const float rate = 1.f / static_cast<float>(_typicalCount);
+        _typical += (rate > typicalRate ? rate : typicalRate) * (confidence - _typical);
+      }
       _low = confidence < lostBelow ? _low + 1 : 0;
       if (_low >= lostAfter) {
         _low = _high = 0;
@@ -75,7 +82,8 @@ class LostDetector {
 
  private:
   int _low = 0, _high = 0, _probation = 0;
-  float _typical = 0.f;  // running mean of the tracked confidence
+  int _typicalCount = 0;  // tracked frames in _typical
+  float _typical = 0.f;   // running mean of the tracked confidence
 };
 
 }  // namespace cuetrack
