@@ -67,8 +67,10 @@ const char* usageText() {
          "  --quiet            no status line (fps, dropped frames, state) on stderr\n"
          "  --help\n"
          "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM, STOP command),\n"
-         "  1 bad command line, 2 source failed, 3 output failed (cannot open, or a write to\n"
-         "  --out/stdout failed; tracking went on), 4 --box refused by the tracker\n";
+         "  1 bad command line, 2 source failed (cannot open, a read failed, or a frame's size\n"
+         "  differs from the frame the track began on), 3 output failed (cannot open, or a\n"
+         "  write to --out/stdout failed; tracking went on), 4 the --box, or the source's\n"
+         "  ground-truth box, refused by the tracker\n";
 }
 
 ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size_t errLen) {
