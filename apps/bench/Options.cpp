@@ -11,13 +11,14 @@
 namespace cuetrack::bench {
 namespace {
 
+// Every comma-separated part, empty ones included ("a,,b" -> a, "", b).
 std::vector<std::string> splitComma(const std::string& s) {
   std::vector<std::string> out;
   size_t start = 0;
   while (start <= s.size()) {
     const size_t comma = s.find(',', start);
     const size_t end = comma == std::string::npos ? s.size() : comma;
-    if (end > start) out.push_back(s.substr(start, end - start));
+    out.push_back(s.substr(start, end - start));
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
@@ -44,8 +45,7 @@ const char* usage() {
          "\n"
          "SEQUENCE: a BoBoT video (NAME.avi, ground truth NAME.gt.txt beside it), an RGB-D\n"
          "  folder, an OTB folder, a fakenect recording (groundtruth.txt beside INDEX.txt),\n"
-         "  or synth:<scene>. A missing or broken sequence is reported and skipped; the\n"
-         "  exit code is then 1.\n"
+         "  or synth:<scene>. A missing or broken sequence is reported and skipped.\n"
          "\n"
          "  --gt FILE          ground truth for the next SEQUENCE\n"
          "  --tracker T[,T]    cuetrack, opencv-kcf, opencv-csrt, opencv-mil, opencv-boosting,\n"
@@ -69,7 +69,12 @@ const char* usage() {
          "  --plots DIR        overlap-over-time plots, DIR/<sequence>.overlap.png\n"
          "  --results DIR      BoBoT result files, DIR/<sequence>/<tracker>.run<k>.txt\n"
          "  --overlay DIR      frames with the boxes of run 1 drawn, DIR/<sequence>/NNNNNN.jpg\n"
-         "  --quiet            no progress on stderr\n";
+         "  --quiet            no progress on stderr\n"
+         "exit codes: 0 every tracker ran on every sequence and every output was written;\n"
+         "  1 a sequence was missing or broken (no ground truth, a box the tracker refused,\n"
+         "  frames changing size), a tracker could not run on a sequence, or an output\n"
+         "  (stdout, --json, --markdown, --csv, --plots, --results, --overlay) failed: each\n"
+         "  is reported and the rest goes on; 2 bad command line\n";
 }
 
 bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std::string* err) {
@@ -97,6 +102,10 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
     } else if (a == "--tracker") {
       if (!value(&v)) return false;
       for (const std::string& t : splitComma(v)) {
+        if (t.empty()) {
+          *err = std::string("--tracker '") + v + "': an empty tracker name";
+          return false;
+        }
         if (t == "opencv-all") {
           for (int p = 0; p < kNumPeers; ++p) trackers.push_back(peerName(p));
         } else if (t == "cuetrack" || isPeerName(t)) {
@@ -109,6 +118,10 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
     } else if (a == "--config") {
       if (!value(&v)) return false;
       for (const std::string& c : splitComma(v)) {
+        if (c.empty()) {
+          *err = std::string("--config '") + v + "': an empty configuration name";
+          return false;
+        }
         if (!isCuetrackConfig(c)) {
           *err = "--config: unknown configuration '" + c +
                  "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "

@@ -13,6 +13,8 @@ struct SequenceResult {
   std::string name;   // file or folder name without extension
   bool ran = false;   // false: the tracker could not run on it, or the sequence is broken
   std::string error;  // one line: why not
+  // A --results file that could not be written (reported once; later runs write none).
+  std::string outputError;
   Figures figures;
   // Mean overlap over runs for each evaluated frame, in frame order (plots, CSV).
   std::vector<int> frameIndex;

@@ -143,6 +143,15 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
   }
   const CachedFrame& first = seq.frames[initAt];
   const int tracked = static_cast<int>(seq.frames.size() - initAt - 1);
+  // A tracker given a frame of another size would skip it (cuetrack: still "tracking").
+  for (size_t i = initAt + 1; i < seq.frames.size(); ++i) {
+    const CachedFrame& f = seq.frames[i];
+    if (f.width == first.width && f.height == first.height) continue;
+    result.error = "frame " + std::to_string(f.index) + " is " + std::to_string(f.width) + "x" +
+                   std::to_string(f.height) + ", the track began at " +
+                   std::to_string(first.width) + "x" + std::to_string(first.height);
+    return result;
+  }
 
   std::string err;
   std::unique_ptr<BenchTracker> tracker = factory(spec, &err);
@@ -204,7 +213,7 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
     if (run == 0)
       for (const IndexedBox& b : boxes) result.firstRunBoxes.push_back(b.box);
     allocsPerRun.push_back(static_cast<double>(allocs));
-    if (!options.resultsDir.empty()) {
+    if (!options.resultsDir.empty() && result.outputError.empty()) {
       const std::string dir = options.resultsDir + "/" + seq.name;
       const std::string label =
           spec.config == "default" ? spec.tracker : spec.tracker + "-" + spec.config;
@@ -212,8 +221,10 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
       std::string werr;
       const std::string header = seq.gtHeader.empty() ? "./" + seq.name : seq.gtHeader;
       if (!makeDirs(dir, &werr) ||
-          !writeBobotResult(path, header, boxes, first.width, first.height, &werr))
+          !writeBobotResult(path, header, boxes, first.width, first.height, &werr)) {
         std::fprintf(stderr, "cuetrack-bench: %s\n", werr.c_str());
+        result.outputError = werr;
+      }
     }
   }
 

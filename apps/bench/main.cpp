@@ -1,7 +1,11 @@
 // cuetrack-bench: the paper's evaluation protocol over recorded sequences, for
 // cuetrack's configurations and OpenCV's trackers on the very same decoded frames.
-// Exit code: 0 all sequences ran, 1 a sequence or an output file failed, 2 bad usage.
+// Exit code: 0 every tracker ran on every sequence and every output was written;
+// 1 a sequence was broken, a tracker could not run on one, or an output failed; 2 bad
+// command line.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -57,7 +61,7 @@ int main(int argc, char** argv) {
   bool help = false;
   std::string err;
   if (!parseOptions(argc, argv, &options, &help, &err)) {
-    std::fprintf(stderr, "cuetrack-bench: %s\n%s", err.c_str(), usage());
+    std::fprintf(stderr, "cuetrack-bench: %s (see --help)\n", err.c_str());
     return 2;
   }
   if (help) {
@@ -111,9 +115,12 @@ int main(int argc, char** argv) {
                            static_cast<int>(options.sequences.size()), planned);
     for (size_t ei = 0; ei < options.entries.size(); ++ei) {
       SequenceResult r = runEntry(options.entries[ei], seq, factory, runOptions, progress);
-      if (!r.ran)
+      if (!r.ran) {
         std::fprintf(stderr, "cuetrack-bench: %s on %s: %s\n", results[ei].label().c_str(),
                      seq.name.c_str(), r.error.c_str());
+        ++failures;
+      }
+      if (!r.outputError.empty()) ++failures;  // reported by runEntry
       results[ei].sequences.push_back(std::move(r));
     }
 
@@ -141,7 +148,14 @@ int main(int argc, char** argv) {
     }
   }
 
-  std::fputs(textReport(results).c_str(), stdout);
+  const std::string report = textReport(results);
+  errno = 0;
+  if (std::fwrite(report.data(), 1, report.size(), stdout) != report.size() ||
+      std::fflush(stdout) != 0) {
+    std::fprintf(stderr, "cuetrack-bench: stdout: cannot write the report: %s\n",
+                 errno ? std::strerror(errno) : "write failed");
+    ++failures;
+  }
   if (!options.jsonPath.empty() && !writeJson(options.jsonPath.c_str(), results, &err)) {
     std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
     ++failures;

@@ -1,5 +1,6 @@
 // cuetrack-convert (built by apps/synth/CMakeLists.txt): converts any frame source (see --help) to
 // a fakenect recording or an RGB-D folder, or measures how fast a source reads (--bench).
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -65,9 +66,12 @@ int main(int argc, char** argv) {
       opt.maxFrames = static_cast<int>(v);
     } else if (!std::strcmp(a, "--seed") && hasValue) {
       char* end = nullptr;
+      errno = 0;
       opt.seed = std::strtoull(argv[++i], &end, 10);
-      if (end == argv[i] || *end != '\0') {
-        std::fprintf(stderr, "cuetrack-convert: --seed '%s' is not a number\n", argv[i]);
+      // strtoull takes "-1" as 2^64-1: only plain digits are a seed.
+      if (*argv[i] < '0' || *argv[i] > '9' || end == argv[i] || *end != '\0' || errno != 0) {
+        std::fprintf(stderr, "cuetrack-convert: --seed '%s' is not a non-negative whole number\n",
+                     argv[i]);
         return kExitUsage;
       }
     } else if (!std::strcmp(a, "--gt") && hasValue) {

@@ -1,5 +1,6 @@
 // cuetrack-synth: writes a synthetic RGB-D scene with exact ground truth as a
 // fakenect recording or an RGB-D folder.
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -73,9 +74,12 @@ int main(int argc, char** argv) {
       }
     } else if (!std::strcmp(a, "--seed") && hasValue) {
       char* end = nullptr;
+      errno = 0;
       seed = std::strtoull(argv[++i], &end, 10);
-      if (end == argv[i] || *end != '\0') {
-        std::fprintf(stderr, "cuetrack-synth: --seed '%s' is not a number\n", argv[i]);
+      // strtoull takes "-1" as 2^64-1: only plain digits are a seed.
+      if (*argv[i] < '0' || *argv[i] > '9' || end == argv[i] || *end != '\0' || errno != 0) {
+        std::fprintf(stderr, "cuetrack-synth: --seed '%s' is not a non-negative whole number\n",
+                     argv[i]);
         return kExitUsage;
       }
     } else if (!std::strcmp(a, "--size") && hasValue) {

@@ -7,6 +7,7 @@
 // --hash also prints an FNV-1a hash of every frame's box, confidence and state: two
 // builds that print the same hash tracked bit for bit alike.
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -45,11 +46,35 @@ double median(uint32_t* v, int n) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-int usage() {
-  std::fprintf(stderr,
-               "usage: cuetrack-trackspeed [--preset NAME] [--scene NAME] [--frames N] "
-               "[--particles N] [--weak M] [--icount] [--hash]\n");
-  return 2;
+const char* kUsage =
+    "usage: cuetrack-trackspeed [--preset NAME] [--scene NAME] [--frames N] [--particles N]\n"
+    "                           [--weak M] [--icount] [--hash]\n"
+    "The tracker's median update time (and its stages) on a synthetic scene.\n"
+    "  --preset NAME   1.1-1.4, 2.1-2.5, best (default 2.1)\n"
+    "  --scene NAME    synthetic scene (default moving; cuetrack-synth --list)\n"
+    "  --frames N      updates to time, 0..1999 (default 150)\n"
+    "  --particles N   particles, 1..2000 (default: the preset's)\n"
+    "  --weak M        weak classifiers, 1..32 (default: the preset's)\n"
+    "  --icount        read no clock (for qemu-icount: count(N) - count(0), / N)\n"
+    "  --hash          print an FNV-1a hash of every frame's box, confidence and state\n"
+    "exit codes: 0 done, 1 bad command line, 2 the scene could not be rendered or the\n"
+    "  tracker refused its first box\n";
+
+constexpr int kExitUsage = 1;
+constexpr int kExitRun = 2;
+
+// The whole of text as a decimal integer in [lo, hi], else an error line and false.
+bool parseCount(const char* option, const char* text, long lo, long hi, int* out) {
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || errno != 0 || v < lo || v > hi) {
+    std::fprintf(stderr, "cuetrack-trackspeed: %s '%s': expected a whole number in %ld..%ld\n",
+                 option, text, lo, hi);
+    return false;
+  }
+  *out = static_cast<int>(v);
+  return true;
 }
 
 }  // namespace
@@ -62,36 +87,40 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     const bool more = i + 1 < argc;
-    if (!std::strcmp(a, "--preset") && more)
+    if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
+      std::fputs(kUsage, stdout);
+      return 0;
+    } else if (!std::strcmp(a, "--preset") && more) {
       presetName = argv[++i];
-    else if (!std::strcmp(a, "--scene") && more)
+    } else if (!std::strcmp(a, "--scene") && more) {
       scene = argv[++i];
-    else if (!std::strcmp(a, "--frames") && more)
-      frames = std::atoi(argv[++i]);
-    else if (!std::strcmp(a, "--particles") && more)
-      particles = std::atoi(argv[++i]);
-    else if (!std::strcmp(a, "--weak") && more)
-      weak = std::atoi(argv[++i]);
-    else if (!std::strcmp(a, "--icount"))
+    } else if (!std::strcmp(a, "--frames") && more) {
+      if (!parseCount(a, argv[++i], 0, kMaxFrames - 1, &frames)) return kExitUsage;
+    } else if (!std::strcmp(a, "--particles") && more) {
+      if (!parseCount(a, argv[++i], 1, kMaxParticles, &particles)) return kExitUsage;
+    } else if (!std::strcmp(a, "--weak") && more) {
+      if (!parseCount(a, argv[++i], 1, kMaxWeakClassifiers, &weak)) return kExitUsage;
+    } else if (!std::strcmp(a, "--icount")) {
       icount = true;
-    else if (!std::strcmp(a, "--hash"))
+    } else if (!std::strcmp(a, "--hash")) {
       hash = true;
-    else
-      return usage();
+    } else {
+      std::fprintf(stderr,
+                   "cuetrack-trackspeed: unknown option or missing value: '%s' (see --help)\n", a);
+      return kExitUsage;
+    }
   }
   Preset preset;
   if (!parsePreset(presetName, &preset)) {
-    std::fprintf(stderr, "cuetrack-trackspeed: unknown preset '%s'\n", presetName);
-    return 2;
-  }
-  if (frames < 0 || frames + 1 > kMaxFrames) {
-    std::fprintf(stderr, "cuetrack-trackspeed: --frames must be in [0, %d]\n", kMaxFrames - 1);
-    return 2;
+    std::fprintf(stderr, "cuetrack-trackspeed: --preset '%s': unknown (1.1-1.4, 2.1-2.5, best)\n",
+                 presetName);
+    return kExitUsage;
   }
   SceneSpec spec;
   if (!makeScene(scene, &spec)) {
-    std::fprintf(stderr, "cuetrack-trackspeed: unknown scene '%s'\n", scene);
-    return 2;
+    std::fprintf(stderr, "cuetrack-trackspeed: --scene '%s': unknown (cuetrack-synth --list)\n",
+                 scene);
+    return kExitUsage;
   }
   spec.frameCount = kRendered;
   SyntheticSource* src = new (sourceStorage) SyntheticSource(spec, 1);
@@ -103,13 +132,14 @@ int main(int argc, char** argv) {
   for (int i = 0; i < kRendered; ++i) {
     if (src->next(slots[i]) != ReadStatus::Ok) {
       std::fprintf(stderr, "cuetrack-trackspeed: %s\n", src->error());
-      return 1;
+      return kExitRun;
     }
   }
   const InitError e = tracker.init(slots[0].frame(), slots[0].groundTruth);
   if (e != InitError::None) {
-    std::fprintf(stderr, "cuetrack-trackspeed: init: %s\n", toString(e));
-    return 1;
+    std::fprintf(stderr, "cuetrack-trackspeed: %s: the tracker refused the first box: %s\n", scene,
+                 toString(e));
+    return kExitRun;
   }
   int n = 0, learned = 0;
   uint64_t h = 14695981039346656037ULL;

@@ -408,6 +408,42 @@ TEST_CASE("cuetrack runs on a fakenect recording and takes the target from its g
   CHECK(slurp(appErr).find(missing) != std::string::npos);
 }
 
+TEST_CASE("a recording whose frames change size, or whose ground truth is refused, fails") {
+  TempDir tmp;
+  const std::string rec = tmp.file("rec"), small = tmp.file("small"), gt = tmp.file("gt");
+  const std::string synth = std::string(CUETRACK_SYNTH_BIN) + " --scene moving --frames 8 ";
+  // Frame 5 of rec replaced by the 320x240 one (same file names: same timestamps).
+  const std::string make = synth + "--out " + rec + " >/dev/null && " + synth +
+                           "--size 320x240 --out " + small + " >/dev/null && cd " + tmp.path +
+                           " && for p in r d; do f=$(grep \"^$p-\" rec/INDEX.txt | sed -n 6p)"
+                           " && cp small/$f rec/$f || exit 1; done && cd - >/dev/null && " +
+                           synth + "--out " + gt +
+                           " >/dev/null && sed -i '2s/.*/0 -0.5 0.5 0.05 0.1/' " + gt +
+                           "/groundtruth.txt";
+  REQUIRE(std::system(make.c_str()) == 0);
+  const std::string csv = tmp.file("out.csv"), appErr = tmp.file("app.err");
+  ChildProcess app;
+  const char* argv[] = {CUETRACK_APP_BIN, "--source", rec.c_str(), "--out",
+                        csv.c_str(),      "--quiet",  nullptr};
+  REQUIRE(app.start(argv, nullptr, appErr.c_str()));
+  int status = -1;
+  REQUIRE(app.wait(kAppTimeoutMs, &status));
+  INFO(slurp(appErr));
+  CHECK(status == 2);  // source failed: the tracker would skip the frame, saying "tracking"
+  CHECK(slurp(appErr).find(rec) != std::string::npos);
+  CHECK(lines(slurp(csv)).size() <= 6);  // header + frames 0..4 at most
+
+  // The ground truth's box lies left of the image: exit 4, naming the file and frame.
+  ChildProcess refused;
+  const char* gargv[] = {CUETRACK_APP_BIN, "--source", gt.c_str(), "--quiet", nullptr};
+  REQUIRE(refused.start(gargv, "/dev/null", appErr.c_str()));
+  REQUIRE(refused.wait(kAppTimeoutMs, &status));
+  INFO(slurp(appErr));
+  CHECK(status == 4);
+  CHECK(slurp(appErr).find(gt + "/groundtruth.txt: frame 0: box -320,240,32,48 refused") !=
+        std::string::npos);
+}
+
 TEST_CASE("cuetrack-listen ends cleanly when the port closes") {
   if (!haveSocat()) {
     WARN("socat not installed: skipped");
@@ -430,7 +466,7 @@ TEST_CASE("cuetrack-listen ends cleanly when the port closes") {
 
 TEST_CASE("documented exit codes, each with one line naming what is at fault") {
   TempDir tmp;
-  const std::string err = tmp.file("err");
+  const std::string err = tmp.file("err"), out = tmp.file("out"), syn = tmp.file("syn");
   struct Case {
     std::vector<const char*> args;
     int code;
@@ -447,6 +483,23 @@ TEST_CASE("documented exit codes, each with one line naming what is at fault") {
       {{CUETRACK_APP_BIN, "--serial", "/nonexistent/tty"}, 3, "/nonexistent/tty: cannot open"},
       {{CUETRACK_APP_BIN, "--out", "/dev/full", "--frames", "2"}, 3, "/dev/full"},
       {{CUETRACK_APP_BIN, "--box", "5000,5000,10,10", "--frames", "2"}, 4, "--box 5000,5000,10,10"},
+      {{CUETRACK_APP_BIN, "--box", "1,1,inf,20", "--frames", "2"}, 1, "--box 1,1,inf,20: expected"},
+      {{CUETRACK_APP_BIN, "--box", "1,1,1e30,1e30", "--frames", "2"}, 1, "--box 1,1,1e30,1e30:"},
+      {{CUETRACK_APP_BIN, "--box", "nan,1,10,10", "--frames", "2"}, 1, "--box nan,1,10,10:"},
+      {{CUETRACK_APP_BIN, "--seed", "-1", "--frames", "2"}, 1, "--seed -1"},
+      {{CUETRACK_APP_BIN, "--baud", "0", "--frames", "2"}, 1, "--baud 0: unsupported"},
+      {{CUETRACK_SYNTH_BIN, "--scene", "moving", "--out", syn.c_str(), "--seed", "-1"},
+       2,
+       "--seed '-1'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--help"}, 0, ""},
+      {{CUETRACK_TRACKSPEED_BIN, "--frames", "1", "--particles", "50"}, 0, ""},
+      {{CUETRACK_TRACKSPEED_BIN, "--particles", "abc"}, 1, "--particles 'abc'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--particles", "-1"}, 1, "--particles '-1'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--particles", "0"}, 1, "--particles '0'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--particles", "99999999"}, 1, "--particles '99999999'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--frames", "abc"}, 1, "--frames 'abc'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--weak", "33"}, 1, "--weak '33'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--scene", "nowhere"}, 1, "--scene 'nowhere'"},
       {{CUETRACK_LISTEN_BIN}, 1, "missing PORT"},
       {{CUETRACK_LISTEN_BIN, "/dev/null", "--send", "jump"}, 1, "command 'jump'"},
       {{CUETRACK_LISTEN_BIN, "/nonexistent/tty"}, 2, "/nonexistent/tty: cannot open"},
@@ -455,12 +508,14 @@ TEST_CASE("documented exit codes, each with one line naming what is at fault") {
     std::vector<const char*> argv = c.args;
     argv.push_back(nullptr);
     ChildProcess p;
-    REQUIRE(p.start(argv.data(), "/dev/null", err.c_str()));
+    REQUIRE(p.start(argv.data(), out.c_str(), err.c_str()));
     int status = -1;
     REQUIRE(p.wait(kAppTimeoutMs, &status));
     const std::string text = slurp(err);
     INFO(c.args[1 < c.args.size() ? 1 : 0] << " -> " << text);
     CHECK(status == c.code);
     CHECK(text.find(c.says) != std::string::npos);
+    if (std::string(c.args[1 < c.args.size() ? 1 : 0]) == "--help")
+      CHECK(slurp(out).find("exit codes") != std::string::npos);
   }
 }

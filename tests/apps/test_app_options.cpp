@@ -76,3 +76,37 @@ TEST_CASE("bad command lines give one line naming the option") {
   CHECK(parse({"--help"}, &o, &err) == ParseResult::Help);
   CHECK(std::string(usageText()).find("exit codes") != std::string::npos);
 }
+
+TEST_CASE("--box: non-finite and absurd values are refused at parsing, sane ones kept") {
+  AppOptions o;
+  std::string err;
+  for (const char* box : {"1,1,inf,20", "1,1,1e30,1e30", "nan,1,10,10", "1,-inf,10,10",
+                          "1,1,10,nan", "200000,1,10,10", "1,1,100001,10"}) {
+    INFO(box);
+    CHECK(parse({"--box", box}, &o, &err) == ParseResult::Error);
+    CHECK(err.find(std::string("--box ") + box + ": expected X,Y,W,H") == 0);
+  }
+  REQUIRE(parse({"--box", "-5,-6,100000,7.5"}, &o, &err) == ParseResult::Run);
+  CHECK(o.box.x == -5.f);
+  CHECK(o.box.w == 100000.f);
+}
+
+TEST_CASE("--seed takes plain digits only; --baud says unsupported for a number it cannot use") {
+  AppOptions o;
+  std::string err;
+  CHECK(parse({"--seed", "-1"}, &o, &err) == ParseResult::Error);
+  CHECK(err.find("--seed -1: expected a non-negative integer") == 0);
+  CHECK(parse({"--seed", " 5"}, &o, &err) == ParseResult::Error);
+  CHECK(parse({"--seed", "+5"}, &o, &err) == ParseResult::Error);
+  CHECK(parse({"--seed", "0x10"}, &o, &err) == ParseResult::Error);
+  CHECK(parse({"--seed", "99999999999999999999999"}, &o, &err) == ParseResult::Error);
+  REQUIRE(parse({"--seed", "18446744073709551615"}, &o, &err) == ParseResult::Run);
+  CHECK(o.seed == 18446744073709551615ull);
+  for (const char* baud : {"0", "-9600", "4000001"}) {
+    INFO(baud);
+    CHECK(parse({"--baud", baud}, &o, &err) == ParseResult::Error);
+    CHECK(err.find(std::string("--baud ") + baud + ": unsupported") == 0);
+  }
+  CHECK(parse({"--baud", "fast"}, &o, &err) == ParseResult::Error);
+  CHECK(err.find("--baud fast: not a number") == 0);
+}

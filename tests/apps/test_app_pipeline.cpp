@@ -27,12 +27,15 @@ class TinySource final : public FrameSource {
   ReadStatus next(FrameSlot& out) override {
     if (_failAt == _index) return ReadStatus::Error;
     if (_index >= _frames) return ReadStatus::End;
-    out.rgb.resize(64, 48);
+    if (_index >= _resizeFrom)
+      out.rgb.resize(_resizeW, _resizeH);
+    else
+      out.rgb.resize(64, 48);
     out.hasDepth = false;
     out.timeUs = static_cast<uint64_t>(_index) * 33333u;
     out.index = _index;
     out.hasGroundTruth = _withTruth;
-    out.groundTruth = _index >= _visibleFrom ? Box{10.f, 12.f, 20.f, 16.f} : Box{};
+    out.groundTruth = _index >= _visibleFrom ? Box{_truthX, 12.f, 20.f, 16.f} : Box{};
     ++_index;
     return ReadStatus::Ok;
   }
@@ -40,6 +43,12 @@ class TinySource final : public FrameSource {
   const char* name() const override { return "tiny"; }
   void failAt(int i) { _failAt = i; }
   void visibleFrom(int i) { _visibleFrom = i; }  // ground truth empty before frame i
+  void truthX(float x) { _truthX = x; }
+  void resizeFrom(int i, int w, int h) {  // frames i... are w x h
+    _resizeFrom = i;
+    _resizeW = w;
+    _resizeH = h;
+  }
 
  private:
   int _frames;
@@ -47,6 +56,8 @@ class TinySource final : public FrameSource {
   int _index = 0;
   int _failAt = -1;
   int _visibleFrom = 0;
+  float _truthX = 10.f;
+  int _resizeFrom = 1 << 30, _resizeW = 0, _resizeH = 0;
 };
 
 // Moves the box 1 px right per update; refuses boxes with x < 0.
@@ -438,4 +449,47 @@ TEST_CASE("ground truth starts tracking at the first frame where the target is v
   CHECK(rig.sink.at(3).state == CTP_STATE_TRACKING);
   CHECK(rig.sink.at(3).box_px[0] == 10);
   CHECK(rig.tracker.inits == 1);
+}
+
+TEST_CASE("a frame of another size mid-track ends the run with one line naming the source") {
+  PipelineOptions o;
+  o.sourceName = "rec/";
+  static Rig rig(6, true, o);
+  rig.source.resizeFrom(3, 32, 24);
+  for (int i = 0; i < 3; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  REQUIRE(rig.step() == StepResult::SourceError);
+  CHECK(rig.reporter.countContaining("rec/: frame 3 is 32x24, the track began at 64x48") == 1);
+  CHECK(rig.sink.size() == 3);  // no track was made up for the odd frame
+  CHECK(rig.tracker.updates == 2);
+}
+
+TEST_CASE("frames may change size while no target is tracked; a START takes the new size") {
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  static Rig rig(6, true, o);
+  rig.source.resizeFrom(2, 32, 24);
+  for (int i = 0; i < 3; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  ctp_command_t start = command(CTP_CMD_START, 3);
+  start.box_px[0] = 2;
+  start.box_px[2] = 8;
+  start.box_px[3] = 8;
+  rig.host.send(start);
+  for (int i = 0; i < 3; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.sink.at(5).state == CTP_STATE_TRACKING);
+  CHECK(rig.reporter.countContaining("the track began at") == 0);
+}
+
+TEST_CASE("a refused ground-truth box ends the run, naming the ground-truth file and frame") {
+  PipelineOptions o;
+  o.groundTruthName = "rec/groundtruth.txt";
+  static Rig rig(5, true, o);
+  rig.source.visibleFrom(2);
+  rig.source.truthX(-4.f);
+  REQUIRE(rig.step() == StepResult::Continue);  // target not visible yet: idle
+  REQUIRE(rig.step() == StepResult::Continue);
+  REQUIRE(rig.step() == StepResult::BoxRejected);
+  CHECK(rig.reporter.countContaining(
+            "rec/groundtruth.txt: frame 2: box -4,12,20,16 refused by the tracker: "
+            "BoxOutsideImage") == 1);
+  CHECK(rig.tracker.inits == 0);
 }

@@ -1,5 +1,6 @@
 // cuetrack-bench as a user runs it: bad command lines, missing and broken sequences
-// (clear error, the next sequence still runs, non-zero exit), trackers that cannot run.
+// (clear error, the next sequence still runs, non-zero exit), trackers that cannot run,
+// outputs that cannot be written (exit 1 each).
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
@@ -18,9 +19,11 @@ struct Run {
   std::string out;  // stdout and stderr together
 };
 
-Run runBench(const std::string& args) {
+// stdoutTo: where the bench's stdout goes ("": with stderr into Run::out).
+Run runBench(const std::string& args, const std::string& stdoutTo = "") {
   Run r;
-  const std::string cmd = std::string(CUETRACK_BENCH_EXE) + " " + args + " 2>&1";
+  const std::string cmd = std::string(CUETRACK_BENCH_EXE) + " " + args + " 2>&1" +
+                          (stdoutTo.empty() ? "" : " >" + stdoutTo);
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p);
   char buf[4096];
@@ -40,11 +43,23 @@ std::string readAll(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("a bad command line exits 2 with one clear line and the usage") {
+TEST_CASE("a bad command line exits 2 with one clear line pointing to --help") {
   Run r = runBench("--runs zero synth:moving");
   CHECK(r.exitCode == 2);
-  CHECK(r.out.find("cuetrack-bench: --runs: 'zero' is not a positive whole number") !=
-        std::string::npos);
+  CHECK(r.out == "cuetrack-bench: --runs: 'zero' is not a positive whole number (see --help)\n");
+  r = runBench("--tracker '' synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("--tracker '': an empty tracker name") != std::string::npos);
+  r = runBench("--tracker cuetrack,, synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("--tracker 'cuetrack,,': an empty tracker name") != std::string::npos);
+  r = runBench("--config best,,2.1 synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("an empty configuration name") != std::string::npos);
+  r = runBench("--help");
+  CHECK(r.exitCode == 0);
+  CHECK(r.out.find("exit codes: 0 ") != std::string::npos);
+  CHECK(r.out.find("2 bad command line") != std::string::npos);
   r = runBench("--tracker opencv-goturn synth:moving");
   CHECK(r.exitCode == 2);
   CHECK(r.out.find("unknown tracker 'opencv-goturn'") != std::string::npos);
@@ -94,18 +109,55 @@ TEST_CASE("ablations of best (a beyond-the-paper switch off) run as configuratio
   CHECK(r.out.find("best-fixeds") != std::string::npos);
 }
 
-TEST_CASE("--rgb-only drops depth: best falls back to 2D, 2.1 cannot start") {
+TEST_CASE("--rgb-only drops depth: best falls back to 2D, 2.1 cannot start (exit 1)") {
   const char* kNoDepth = "cannot run: init failed: no depth";
   Run r = runBench("synth:moving --frames 6 --runs 1 --quiet --config best,2.1");
   CHECK(r.exitCode == 0);
   CHECK(r.out.find(kNoDepth) == std::string::npos);  // control: the scene has depth
   r = runBench("synth:moving --frames 6 --runs 1 --quiet --rgb-only --config best,2.1");
-  CHECK(r.exitCode == 0);
+  CHECK(r.exitCode == 1);
   CHECK(r.out.find(kNoDepth) != std::string::npos);
   const size_t row = r.out.find("\ncuetrack best ");  // best's row of the first table
   REQUIRE(row != std::string::npos);
   const std::string line = r.out.substr(row + 1, r.out.find('\n', row + 1) - row - 1);
   CHECK(line.find("cannot run") == std::string::npos);
+}
+
+TEST_CASE("lost results exit 1: stdout full, --results not writable") {
+  Run r = runBench("synth:moving:5 --runs 1 --quiet", "/dev/full");
+  CHECK(r.exitCode == 1);
+  CHECK(r.out.find("cuetrack-bench: stdout: cannot write the report") != std::string::npos);
+  r = runBench("synth:moving:5 --runs 2 --quiet --results /proc/cuetrack-nope");
+  CHECK(r.exitCode == 1);
+  const size_t at = r.out.find("/proc/cuetrack-nope");
+  REQUIRE(at != std::string::npos);
+  CHECK(r.out.find("/proc/cuetrack-nope", at + 1) == std::string::npos);  // said once
+  r = runBench("synth:moving:5 --runs 1 --quiet");
+  CHECK(r.exitCode == 0);  // control
+}
+#endif
+
+#if CUETRACK_BENCH_TEST_READERS && defined(CUETRACK_SYNTH_EXE)
+TEST_CASE("sequences without a usable start or with frames changing size exit 1, each named") {
+  const std::string synth = std::string(CUETRACK_SYNTH_EXE) + " --scene moving --frames 6 ";
+  const std::string make =
+      "rm -rf bench_cli_seq && mkdir bench_cli_seq && cd bench_cli_seq && " + synth +
+      "--format otb --out otb >/dev/null && rm otb/groundtruth_rect.txt && " + synth +
+      "--out gt >/dev/null && sed -i '2s/.*/0 -0.5 0.5 0.05 0.1/' gt/groundtruth.txt && " + synth +
+      "--out sz >/dev/null && " + synth +
+      "--size 320x240 --out small >/dev/null && for p in r d; do "
+      "f=$(grep \"^$p-\" sz/INDEX.txt | sed -n 4p) && cp small/$f sz/$f || exit 1; done";
+  REQUIRE(std::system(make.c_str()) == 0);
+  Run r = runBench("bench_cli_seq/otb --runs 1 --quiet");
+  CHECK(r.exitCode == 1);
+  CHECK(r.out.find("cuetrack best on otb: no ground-truth box") != std::string::npos);
+  r = runBench("bench_cli_seq/gt --runs 1 --quiet");
+  CHECK(r.exitCode == 1);
+  CHECK(r.out.find("cuetrack best on gt: cannot run: init failed") != std::string::npos);
+  r = runBench("bench_cli_seq/sz --runs 1 --quiet");
+  CHECK(r.exitCode == 1);
+  CHECK(r.out.find("sz") != std::string::npos);
+  CHECK(r.out.find("320x240") != std::string::npos);
 }
 #endif
 
@@ -133,7 +185,7 @@ TEST_CASE("RGB-D configurations on RGB-only BoBoT video are reported as unable t
     return;
   }
   const Run r = runBench(video + " --frames 6 --runs 1 --quiet --config 2.1,1.1");
-  CHECK(r.exitCode == 0);
+  CHECK(r.exitCode == 1);
   CHECK(r.out.find("cuetrack 2.1 on Vid_C_juice: cannot run") != std::string::npos);
 }
 #endif

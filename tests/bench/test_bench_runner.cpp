@@ -162,6 +162,38 @@ TEST_CASE("invisible targets count with overlap 0; no box at all means nothing t
   CHECK(r.error == "no ground-truth box to initialise from");
 }
 
+TEST_CASE("frames that change size after the initialisation frame fail the sequence") {
+  MovingSquareSource src(8, -1);
+  Sequence seq = load(src);
+  TrackerFactory factory = [](const EntrySpec&, std::string*) {
+    return std::unique_ptr<BenchTracker>(std::make_unique<ShiftTracker>(0.f));
+  };
+  Progress quiet(false);
+  SequenceResult r = runEntry({"fake", "default", 1}, seq, factory, RunOptions{}, quiet);
+  REQUIRE(r.ran);  // control: same sizes throughout
+  CachedFrame& odd = seq.frames[5];
+  odd.width = 80;
+  odd.height = 60;
+  odd.rgb.resize(80 * 60);
+  r = runEntry({"fake", "default", 1}, seq, factory, RunOptions{}, quiet);
+  CHECK_FALSE(r.ran);
+  CHECK(r.error == "frame 5 is 80x60, the track began at 160x120");
+}
+
+TEST_CASE("a --results folder that cannot be written is reported once and marked") {
+  MovingSquareSource src(5, -1);
+  const Sequence seq = load(src);
+  TrackerFactory factory = [](const EntrySpec&, std::string*) {
+    return std::unique_ptr<BenchTracker>(std::make_unique<ShiftTracker>(0.f));
+  };
+  RunOptions options;
+  options.resultsDir = "/proc/cuetrack-nope";
+  Progress quiet(false);
+  const SequenceResult r = runEntry({"fake", "default", 3}, seq, factory, options, quiet);
+  CHECK(r.ran);  // the figures are still good
+  CHECK(r.outputError.find("/proc/cuetrack-nope") == 0);
+}
+
 TEST_CASE("a tracker that cannot run is reported with its reason, in every report") {
   MovingSquareSource src(4, -1);
   const Sequence seq = load(src);

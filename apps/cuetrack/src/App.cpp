@@ -71,6 +71,10 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   po.useGroundTruth = opt.useGroundTruth;
   po.statusPeriodUs = opt.quiet ? 0 : 1000000;
   po.droppedFrames = droppedFrames;
+  static char groundTruthName[512];
+  describeGroundTruth(opt.source, groundTruthName, sizeof groundTruthName);
+  po.sourceName = opt.source ? opt.source : source->name();
+  po.groundTruthName = groundTruthName;
   Pipeline pipeline(*source, slot, tracker, clock, reporter, po);
   if (opt.outPath) pipeline.addSink(&fileSink);
   if (opt.forceStdout || (!opt.outPath && !opt.serialPath)) {

@@ -1,12 +1,16 @@
 #include "Options.hpp"
 
 #include <cerrno>
+#include <climits>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
 namespace cuetrack::app {
 namespace {
+
+constexpr float kMaxBoxPx = 100000.f;  // far beyond any sensor; catches 1e30 and typos
 
 bool parseLong(const char* s, long lo, long hi, long* out) {
   char* end = nullptr;
@@ -22,7 +26,8 @@ bool parseBox(const char* s, Box* out) {
   for (int i = 0; i < 4; ++i) {
     char* end = nullptr;
     v[i] = std::strtof(s, &end);
-    if (end == s) return false;
+    // inf, nan and absurd sizes would reach the tracker as a box it "tracks".
+    if (end == s || !std::isfinite(v[i]) || std::fabs(v[i]) > kMaxBoxPx) return false;
     s = end;
     if (i < 3) {
       if (*s != ',') return false;
@@ -62,8 +67,10 @@ const char* usageText() {
          "  --quiet            no status line (fps, dropped frames, state) on stderr\n"
          "  --help\n"
          "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM, STOP command),\n"
-         "  1 bad command line, 2 source failed, 3 output failed (cannot open, or a write to\n"
-         "  --out/stdout failed; tracking went on), 4 --box refused by the tracker\n";
+         "  1 bad command line, 2 source failed (cannot open, a read failed, or a frame's size\n"
+         "  differs from the frame the track began on), 3 output failed (cannot open, or a\n"
+         "  write to --out/stdout failed; tracking went on), 4 the --box, or the source's\n"
+         "  ground-truth box, refused by the tracker\n";
 }
 
 ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size_t errLen) {
@@ -93,7 +100,8 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
     } else if (std::strcmp(a, "--box") == 0) {
       if (!value(&v)) return ParseResult::Error;
       if (!parseBox(v, &out->box)) {
-        std::snprintf(err, errLen, "--box %s: expected X,Y,W,H with W,H > 0 [px]", v);
+        std::snprintf(err, errLen,
+                      "--box %s: expected X,Y,W,H [px], finite, W,H > 0, none beyond 100000", v);
         return ParseResult::Error;
       }
       out->hasBox = true;
@@ -102,8 +110,12 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       out->serialPath = v;
     } else if (std::strcmp(a, "--baud") == 0) {
       if (!value(&v)) return ParseResult::Error;
-      if (!parseLong(v, 1, 4000000, &n)) {
+      if (!parseLong(v, LONG_MIN, LONG_MAX, &n)) {
         std::snprintf(err, errLen, "--baud %s: not a number", v);
+        return ParseResult::Error;
+      }
+      if (n < 1 || n > 4000000) {
+        std::snprintf(err, errLen, "--baud %s: unsupported (9600..921600, see --help)", v);
         return ParseResult::Error;
       }
       out->baud = static_cast<int>(n);
@@ -125,7 +137,8 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       char* end = nullptr;
       errno = 0;
       const unsigned long long s = std::strtoull(v, &end, 10);
-      if (end == v || *end != '\0' || errno != 0) {
+      // strtoull takes "-1" as 2^64-1: only plain digits are a seed.
+      if (*v < '0' || *v > '9' || end == v || *end != '\0' || errno != 0) {
         std::snprintf(err, errLen, "--seed %s: expected a non-negative integer", v);
         return ParseResult::Error;
       }

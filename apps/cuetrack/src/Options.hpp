@@ -12,9 +12,9 @@ namespace cuetrack::app {
 enum ExitCode : int {
   kExitOk = 0,           // source ended, --frames reached, SIGINT/SIGTERM, or STOP command
   kExitUsage = 1,        // bad command line
-  kExitSource = 2,       // source could not be opened or failed while reading
+  kExitSource = 2,       // source could not be opened, failed while reading, or changed size
   kExitOutput = 3,       // --serial/--out could not be opened, or a file/stdout write failed
-  kExitBoxRejected = 4,  // --box refused by the tracker (outside the image, too small...)
+  kExitBoxRejected = 4,  // --box or ground-truth box refused by the tracker (outside...)
 };
 
 struct AppOptions {

@@ -89,27 +89,43 @@ bool Pipeline::startFromOptions(const Frame& frame, Box* initBox, bool* rejected
   // --box applies to the first frame; ground truth to the first frame where the
   // target is visible. Either is tried once.
   Box box{};
-  const char* origin = nullptr;
   if (_options.hasBox) {
     box = _options.box;
-    origin = "--box";
   } else if (_options.useGroundTruth && _slot.hasGroundTruth && !_slot.groundTruth.empty()) {
     box = _slot.groundTruth;
-    origin = "ground truth";
+  } else {
+    return false;
   }
-  if (!origin) return false;
   _autoTargetTried = true;
   const char* why = "";
   if (_tracker.init(frame, box, &why) == 0) {
     *initBox = box;
     return true;
   }
-  char line[200];
-  std::snprintf(line, sizeof line, "%s %g,%g,%g,%g refused by the tracker: %s", origin, box.x,
-                box.y, box.w, box.h, why);
+  // Either ends the run: without it nothing would be tracked, ever.
+  char line[512];
+  if (_options.hasBox) {
+    std::snprintf(line, sizeof line, "--box %g,%g,%g,%g refused by the tracker: %s", box.x, box.y,
+                  box.w, box.h, why);
+  } else {
+    std::snprintf(line, sizeof line, "%s: frame %d: box %g,%g,%g,%g refused by the tracker: %s",
+                  _options.groundTruthName ? _options.groundTruthName : "ground truth", _slot.index,
+                  box.x, box.y, box.w, box.h, why);
+  }
   _reporter.report(line);
-  *rejected = _options.hasBox;  // a refused --box ends the run; refused ground truth does not
+  *rejected = true;
   return false;
+}
+
+bool Pipeline::sizeChanged(const Frame& frame) {
+  if (frame.rgb.width == _trackWidth && frame.rgb.height == _trackHeight) return false;
+  // The tracker would skip such a frame and still say "tracking".
+  char line[512];
+  std::snprintf(line, sizeof line, "%s: frame %d is %dx%d, the track began at %dx%d",
+                _options.sourceName ? _options.sourceName : _source.name(), _slot.index,
+                frame.rgb.width, frame.rgb.height, _trackWidth, _trackHeight);
+  _reporter.report(line);
+  return true;
 }
 
 StepResult Pipeline::step() {
@@ -128,6 +144,7 @@ StepResult Pipeline::step() {
     return StepResult::SourceError;
   }
   const Frame frame = _slot.frame();
+  if (_targetActive && !_startPending && sizeChanged(frame)) return StepResult::SourceError;
   const uint64_t t0 = _clock.nowUs();
 
   TrackResult result;
@@ -144,6 +161,8 @@ StepResult Pipeline::step() {
   if (initialised) {
     // The init frame reports the box the tracker was given, with full confidence.
     _targetActive = true;
+    _trackWidth = frame.rgb.width;
+    _trackHeight = frame.rgb.height;
     result.state = TrackState::Tracking;
     result.box = initBox;
     result.confidence = 1.f;

@@ -22,14 +22,18 @@ struct PipelineOptions {
   uint64_t statusPeriodUs = 0;  // status line period; 0 = no status line
   // Frames the source lost (for the status line); nullptr: FrameSource::skippedFrames().
   uint64_t (*droppedFrames)(const FrameSource&) = nullptr;
+  // For messages: the source as the user named it (nullptr: FrameSource::name()), and
+  // where its ground truth comes from, e.g. "rec/groundtruth.txt" (nullptr: "ground truth").
+  const char* sourceName = nullptr;
+  const char* groundTruthName = nullptr;
 };
 
 enum class StepResult : uint8_t {
   Continue,
   Done,         // source ended or --frames reached
   Stopped,      // STOP command
-  SourceError,  // reported
-  BoxRejected,  // --box refused by the tracker (reported)
+  SourceError,  // reported; also a frame of another size than the track's first (reported)
+  BoxRejected,  // --box or the ground-truth box refused by the tracker (reported)
   OutputsGone,  // every output failed and there is no serial link: nothing left to feed
 };
 
@@ -64,6 +68,8 @@ class Pipeline final : public AppControl {
   // tracking starts on this frame (*initBox: the box given).
   bool startFromCommand(const Frame& frame, Box* initBox);
   bool startFromOptions(const Frame& frame, Box* initBox, bool* rejected);
+  // True (reported) when frame is not of the size the track began on.
+  bool sizeChanged(const Frame& frame);
   void emit(const ctp_track_t& msg);
   void statusLine();
 
@@ -83,7 +89,8 @@ class Pipeline final : public AppControl {
   bool _outputFailed{false};
 
   bool _targetActive{false};
-  bool _autoTargetTried{false};  // --box / ground truth is used once, at the start
+  int _trackWidth{0}, _trackHeight{0};  // [px] of the frame the track began on
+  bool _autoTargetTried{false};         // --box / ground truth is used once, at the start
   bool _startPending{false};
   Box _startBox{};
   uint16_t _startId{0};

@@ -78,6 +78,28 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   return recorded.get();
 }
 
+void describeGroundTruth(const char* spec, char* out, size_t outLen) {
+  if (!spec || std::strcmp(spec, "kinect") == 0 || std::strncmp(spec, "synth", 5) == 0 ||
+      std::strncmp(spec, "pan:", 4) == 0) {
+    std::snprintf(out, outLen, "%s ground truth", spec ? spec : kDefaultScene);
+    return;
+  }
+  const size_t n = std::strlen(spec);
+  if (n > 4 && std::strcmp(spec + n - 4, ".avi") == 0) {  // BoBoT: NAME.avi + NAME.gt.txt
+    std::snprintf(out, outLen, "%.*s.gt.txt", static_cast<int>(n - 4), spec);
+    return;
+  }
+  // A folder: OTB folders have groundtruth_rect.txt, fakenect and RGB-D groundtruth.txt.
+  int dirLen = static_cast<int>(n);
+  while (dirLen > 1 && spec[dirLen - 1] == '/') --dirLen;
+  std::snprintf(out, outLen, "%.*s/groundtruth_rect.txt", dirLen, spec);
+  if (FILE* f = std::fopen(out, "rb")) {
+    std::fclose(f);
+    return;
+  }
+  std::snprintf(out, outLen, "%.*s/groundtruth.txt", dirLen, spec);
+}
+
 uint64_t droppedFrames(const FrameSource& source) {
   uint64_t n = static_cast<uint64_t>(source.skippedFrames());
 #if defined(CUETRACK_HAVE_KINECT)

@@ -15,6 +15,11 @@ namespace cuetrack::app {
 // err on failure.
 FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen);
 
+// Where the ground truth of source `spec` comes from, for messages: the file its reader
+// takes (drivers/recorded/.../OpenSource.hpp), e.g. "rec/groundtruth.txt", or the
+// spec itself for generated sources ("synth:moving ground truth").
+void describeGroundTruth(const char* spec, char* out, size_t outLen);
+
 // Frames lost so far: unreadable frames skipped, plus for the Kinect the frames it
 // dropped because the tracker was slower than the camera.
 uint64_t droppedFrames(const FrameSource& source);
