@@ -70,11 +70,12 @@ const char* usage() {
          "  --results DIR      BoBoT result files, DIR/<sequence>/<tracker>.run<k>.txt\n"
          "  --overlay DIR      frames with the boxes of run 1 drawn, DIR/<sequence>/NNNNNN.jpg\n"
          "  --quiet            no progress on stderr\n"
-         "exit codes: 0 every tracker ran on every sequence and every output was written;\n"
-         "  1 a sequence was missing or broken (no ground truth, a box the tracker refused,\n"
-         "  frames changing size), a tracker could not run on a sequence, or an output\n"
-         "  (stdout, --json, --markdown, --csv, --plots, --results, --overlay) failed: each\n"
-         "  is reported and the rest goes on; 2 bad command line\n";
+         "exit codes: 0 every sequence was sound and every output was written (a tracker\n"
+         "  that cannot run on a sequence is reported and listed, not a failure); 1 a\n"
+         "  sequence was missing or broken (unreadable, no ground truth, a first box outside\n"
+         "  the image, frames changing size) or an output (stdout, --json, --markdown, --csv,\n"
+         "  --plots, --results, --overlay) failed: each is reported and the rest goes on;\n"
+         "  2 bad command line\n";
 }
 
 bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std::string* err) {

@@ -13,6 +13,9 @@ struct SequenceResult {
   std::string name;   // file or folder name without extension
   bool ran = false;   // false: the tracker could not run on it, or the sequence is broken
   std::string error;  // one line: why not
+  // The sequence is at fault (no ground truth to start from, frames changing size): exit 1.
+  // A tracker that cannot run on a sound sequence is a finding, not a failure.
+  bool sequenceFault = false;
   // A --results file that could not be written (reported once; later runs write none).
   std::string outputError;
   Figures figures;

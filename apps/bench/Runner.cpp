@@ -139,10 +139,26 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
   }
   if (initAt == seq.frames.size()) {
     result.error = "no ground-truth box to initialise from";
+    result.sequenceFault = true;
     return result;
   }
   const CachedFrame& first = seq.frames[initAt];
   const int tracked = static_cast<int>(seq.frames.size() - initAt - 1);
+  // A first box outside the image is the ground truth's fault, not the tracker's.
+  {
+    const Box& g = first.groundTruth;
+    const float w = static_cast<float>(first.width), h = static_cast<float>(first.height);
+    if (!(g.x < w && g.y < h && g.x + g.w > 0.f && g.y + g.h > 0.f)) {
+      char box[160];
+      std::snprintf(box, sizeof box,
+                    "frame %d: ground-truth box %.0f,%.0f,%.0f,%.0f lies outside the %dx%d image",
+                    first.index, static_cast<double>(g.x), static_cast<double>(g.y),
+                    static_cast<double>(g.w), static_cast<double>(g.h), first.width, first.height);
+      result.error = box;
+      result.sequenceFault = true;
+      return result;
+    }
+  }
   // A tracker given a frame of another size would skip it (cuetrack: still "tracking").
   for (size_t i = initAt + 1; i < seq.frames.size(); ++i) {
     const CachedFrame& f = seq.frames[i];
@@ -150,6 +166,7 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
     result.error = "frame " + std::to_string(f.index) + " is " + std::to_string(f.width) + "x" +
                    std::to_string(f.height) + ", the track began at " +
                    std::to_string(first.width) + "x" + std::to_string(first.height);
+    result.sequenceFault = true;
     return result;
   }
 
