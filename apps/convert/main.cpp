@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
         src->skippedFrames());
     return n > 0 ? 0 : kExitFailed;
   }
-  auto sink = openSequenceOut(format, out, src->name(), err, sizeof err);
+  auto sink = openSequenceOut(format, out, src->name(), src->nominalFps(), err, sizeof err);
   if (!sink) {
     std::fprintf(stderr, "cuetrack-convert: %s\n", err);
     return std::strncmp(err, "unknown format", 14) == 0 ? kExitUsage : kExitFailed;

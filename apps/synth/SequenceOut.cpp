@@ -22,7 +22,7 @@ class Out final : public SequenceOut {
 }  // namespace
 
 std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir, const char* name,
-                                             char* err, size_t errLen) {
+                                             double fps, char* err, size_t errLen) {
   if (std::strcmp(format, "fakenect") == 0) {
     auto o = std::make_unique<Out<FakenectWriter>>();
     if (!o->writer.open(dir, name)) {
@@ -55,7 +55,7 @@ std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir
   }
   if (std::strcmp(format, "avi") == 0) {
     auto o = std::make_unique<Out<BobotVideoWriter>>();
-    if (!o->writer.open(dir)) {
+    if (!o->writer.open(dir, fps > 0.0 ? fps : 30.0)) {
       std::snprintf(err, errLen, "%s", o->writer.error());
       return nullptr;
     }

@@ -20,8 +20,10 @@ class SequenceOut {
 };
 
 // nullptr with a line in err for an unknown format or an output that cannot be created.
+// fps: the source's frame rate (FrameSource::nominalFps), the avi container's rate; 0 =
+// unknown, then 30 (the Kinect's).
 std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir, const char* name,
-                                             char* err, size_t errLen);
+                                             double fps, char* err, size_t errLen);
 
 // Copies every frame of src into out; returns frames written, -1 on error (line in err).
 int copySequence(FrameSource& src, SequenceOut& out, FrameSlot& slot, char* err, size_t errLen);

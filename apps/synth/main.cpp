@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
   spec.height = static_cast<int>(height);
   auto src = std::make_unique<SyntheticSource>(spec, seed);
   char err[600] = "";
-  auto sink = openSequenceOut(format, out, scene, err, sizeof err);
+  auto sink = openSequenceOut(format, out, scene, src->nominalFps(), err, sizeof err);
   if (!sink) {
     std::fprintf(stderr, "cuetrack-synth: %s\n", err);
     return std::strncmp(err, "unknown format", 14) == 0 ? kExitUsage : kExitFailed;

@@ -2,11 +2,14 @@
 // file layout, pairing, bad input (one line naming the file) and no allocation per frame.
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "AllocCounter.hpp"
 #include "TempDir.hpp"
@@ -285,4 +288,139 @@ TEST_CASE("fakenect writing allocates nothing per frame after the first", "[fake
   CHECK(scope.allocations() == 0);
   if (!w.close()) FAIL(w.error());
   CHECK(w.framesWritten() == 4);
+}
+
+namespace {
+// INDEX entries of one kind ('r', 'd', 'a'), in order.
+std::vector<std::string> entries(const std::string& dir, char kind) {
+  const std::string index = cuetrack::test::readText(dir + "/INDEX.txt");
+  std::vector<std::string> out;
+  size_t pos = 0;
+  while (pos < index.size()) {
+    const size_t nl = index.find('\n', pos);
+    const std::string line = index.substr(pos, nl - pos);
+    if (!line.empty() && line[0] == kind) out.push_back(line);
+    pos = nl == std::string::npos ? index.size() : nl + 1;
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("fakenect: a frame of another size than the first is refused", "[fakenect][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "rec";
+  writeScene(dir, "moving", 3);
+  {  // a 320x240 recording whose first colour and depth files replace frame 1's
+    SceneSpec spec;
+    REQUIRE(makeScene("moving", &spec));
+    spec.frameCount = 1;
+    spec.width = 320;
+    spec.height = 240;
+    auto src = std::make_unique<SyntheticSource>(spec, 3);
+    auto slot = std::make_unique<FrameSlot>();
+    FakenectWriter w;
+    if (!w.open((tmp / "small").c_str())) FAIL(w.error());
+    REQUIRE(src->next(*slot) == ReadStatus::Ok);
+    REQUIRE(w.write(*slot));
+    REQUIRE(w.close());
+  }
+  const std::string r1 = entries(dir, 'r').at(1), d1 = entries(dir, 'd').at(1);
+  test::writeText(dir + "/" + r1, test::readText(tmp / "small/" + entries(tmp / "small", 'r')[0]));
+  test::writeText(dir + "/" + d1, test::readText(tmp / "small/" + entries(tmp / "small", 'd')[0]));
+  auto f = std::make_unique<FrameSlot>();
+  FakenectReader reader;
+  REQUIRE(reader.open(dir.c_str()));
+  REQUIRE(reader.next(*f) == ReadStatus::Ok);
+  CHECK(reader.next(*f) == ReadStatus::Error);
+  CHECK(std::string(reader.error()) == dir + "/" + r1 + ": 320x240, the sequence is 640x480");
+  SourceOptions skip;
+  skip.skipBadFrames = true;
+  FakenectReader skipping;
+  REQUIRE(skipping.open(dir.c_str(), skip));
+  int n = 0;
+  while (skipping.next(*f) == ReadStatus::Ok) {
+    CHECK(f->rgb.width() == 640);
+    ++n;
+  }
+  CHECK(n == 2);
+  CHECK(skipping.skippedFrames() == 1);
+}
+
+TEST_CASE("fakenect: a FIFO in place of a frame file is refused, not waited on",
+          "[fakenect][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "rec";
+  writeScene(dir, "moving", 2);
+  const std::string r0 = entries(dir, 'r').at(0);
+  REQUIRE(std::remove((dir + "/" + r0).c_str()) == 0);
+  REQUIRE(::mkfifo((dir + "/" + r0).c_str(), 0644) == 0);
+  auto f = std::make_unique<FrameSlot>();
+  FakenectReader reader;
+  REQUIRE(reader.open(dir.c_str()));
+  CHECK(reader.next(*f) == ReadStatus::Error);  // used to block in open() forever
+  CHECK(std::string(reader.error()) == dir + "/" + r0 + ": not a regular file");
+}
+
+TEST_CASE("fakenect INDEX times: out of range or going back name the line", "[fakenect][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "rec";
+  writeScene(dir, "moving", 3);
+  const std::string index = test::readText(dir + "/INDEX.txt");
+  SECTION("1e300 seconds") {
+    const std::string r2 = entries(dir, 'r').at(2);
+    std::string bad = index;
+    const std::string huge = "r-1e300-" + r2.substr(r2.find('-', 2) + 1);
+    bad.replace(bad.find(r2), r2.size(), huge);
+    test::writeText(dir + "/INDEX.txt", bad);
+    FakenectReader reader;
+    CHECK_FALSE(reader.open(dir.c_str()));
+    CHECK(std::string(reader.error()).find("INDEX.txt:9: INDEX entry 'r-1e300-") !=
+          std::string::npos);
+    CHECK(std::string(reader.error()).find("seconds 1e+300 outside 0..10000000000") !=
+          std::string::npos);
+  }
+  SECTION("reversed INDEX") {
+    std::vector<std::string> lines;
+    size_t pos = 0;
+    while (pos < index.size()) {
+      const size_t nl = index.find('\n', pos);
+      lines.push_back(index.substr(pos, nl - pos));
+      pos = nl + 1;
+    }
+    std::string reversed;
+    for (auto it = lines.rbegin(); it != lines.rend(); ++it) reversed += *it + "\n";
+    test::writeText(dir + "/INDEX.txt", reversed);
+    FakenectReader reader;
+    CHECK_FALSE(reader.open(dir.c_str()));
+    CHECK(std::string(reader.error()) ==
+          dir +
+              "/INDEX.txt:4: time 1.033333 s goes back from 1.066667 s on line 3 (entries must be "
+              "in capture order)");
+  }
+  SECTION("in order: times from the first entry, frame rate from the colour entries") {
+    FakenectReader reader;
+    REQUIRE(reader.open(dir.c_str()));
+    CHECK(reader.nominalFps() == Approx(30.0).margin(1e-3));
+    auto f = std::make_unique<FrameSlot>();
+    for (uint64_t want : {0u, 33333u, 66667u}) {
+      REQUIRE(reader.next(*f) == ReadStatus::Ok);
+      CHECK(f->timeUs == want);
+    }
+  }
+}
+
+TEST_CASE("fakenect writer refuses a folder that holds a recording", "[fakenect][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "rec";
+  writeScene(dir, "moving", 3);
+  FakenectWriter w;
+  CHECK_FALSE(w.open(dir.c_str()));
+  CHECK(std::string(w.error()) ==
+        dir + ": already holds a recording (INDEX.txt); write to a new or empty folder");
+  FakenectReader reader;  // untouched
+  REQUIRE(reader.open(dir.c_str()));
+  CHECK(reader.frameCount() == 3);
+  REQUIRE(::mkdir((tmp / "empty").c_str(), 0755) == 0);
+  CHECK(w.open((tmp / "empty").c_str()));  // an existing empty folder is fine
+  CHECK(w.close());
 }

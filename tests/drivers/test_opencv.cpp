@@ -2,8 +2,12 @@
 // video (self-made and the real benchmark files), TUM stills, and bad input.
 #include <catch2/catch.hpp>
 
+#include <sys/resource.h>
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <memory>
 #include <opencv2/core.hpp>
@@ -460,4 +464,181 @@ TEST_CASE("panned still: bad specs give one line naming the fault", "[opencv][pa
   fails("pan:" + tmp / "nope.png" + "," + d + ",40,30,30,20,100,101,64,48",
         "nope.png: cannot decode image");
   fails("pan:" + c + "," + c + ",40,30,30,20,100,101,64,48", "c.png: depth must be a 16-bit");
+}
+
+TEST_CASE("image folders: a frame of another size than the first is refused",
+          "[opencv][rgbd][otb][bad]") {
+  TempDir tmp;
+  auto f = std::make_unique<FrameSlot>();
+  SECTION("RGB-D folder") {
+    const std::string dir = tmp / "seq";
+    writeRgbd(dir, "moving", 3);
+    cv::Mat small(240, 320, CV_8UC3, cv::Scalar(1, 2, 3));
+    REQUIRE(cv::imwrite(dir + "/rgb/000001.png", small));
+    REQUIRE(cv::imwrite(dir + "/depth/000001.png", cv::Mat(240, 320, CV_16UC1, cv::Scalar(900))));
+    RgbdFolderReader reader;
+    REQUIRE(reader.open(dir.c_str()));
+    REQUIRE(reader.next(*f) == ReadStatus::Ok);
+    CHECK(reader.next(*f) == ReadStatus::Error);
+    CHECK(std::string(reader.error()) == dir + "/rgb/000001.png: 320x240, the sequence is 640x480");
+  }
+  SECTION("OTB folder") {
+    const std::string dir = tmp / "otb";
+    REQUIRE(rec::makeDirectories((dir + "/img").c_str(), nullptr, 0));
+    REQUIRE(cv::imwrite(dir + "/img/0001.jpg", cv::Mat(240, 320, CV_8UC3, cv::Scalar(9))));
+    REQUIRE(cv::imwrite(dir + "/img/0002.jpg", cv::Mat(120, 160, CV_8UC3, cv::Scalar(9))));
+    OtbFolderReader reader;
+    REQUIRE(reader.open(dir.c_str()));
+    REQUIRE(reader.next(*f) == ReadStatus::Ok);
+    CHECK(reader.next(*f) == ReadStatus::Error);
+    CHECK(std::string(reader.error()) == dir + "/img/0002.jpg: 160x120, the sequence is 320x240");
+  }
+}
+
+TEST_CASE("RGB-D folder: a FIFO in place of an image is refused, not waited on",
+          "[opencv][rgbd][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "seq";
+  writeRgbd(dir, "moving", 2);
+  auto f = std::make_unique<FrameSlot>();
+  for (const char* sub : {"/rgb/000000.png", "/depth/000000.png"}) {
+    INFO(sub);
+    const std::string p = dir + sub;
+    const std::string keep = test::readText(p);
+    REQUIRE(std::remove(p.c_str()) == 0);
+    REQUIRE(::mkfifo(p.c_str(), 0644) == 0);
+    RgbdFolderReader reader;
+    REQUIRE(reader.open(dir.c_str()));
+    CHECK(reader.next(*f) == ReadStatus::Error);
+    CHECK(std::string(reader.error()) == p + ": not a regular file");
+    REQUIRE(std::remove(p.c_str()) == 0);
+    test::writeText(p, keep);
+  }
+}
+
+TEST_CASE("RGB-D folder: intrinsics outside sane bounds or the image are refused",
+          "[opencv][rgbd][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "seq";
+  writeRgbd(dir, "moving", 1);
+  auto f = std::make_unique<FrameSlot>();
+  SECTION("tiny focal length: refused at open") {
+    test::writeText(dir + "/intrinsics.txt", "1e-30 1e-30 325.5 253.5\n");
+    RgbdFolderReader reader;
+    CHECK_FALSE(reader.open(dir.c_str()));
+    CHECK(std::string(reader.error()) == dir + "/intrinsics.txt: fx 1e-30 outside 10..100000 px");
+  }
+  SECTION("principal point outside the image: refused at the first frame") {
+    // 640x480 images: cx 600 would be plausible, but the images here are 320x240.
+    test::writeText(dir + "/intrinsics.txt", "259 259 600 120\n");
+    cv::Mat small(240, 320, CV_8UC3, cv::Scalar(1, 2, 3));
+    REQUIRE(cv::imwrite(dir + "/rgb/000000.png", small));
+    REQUIRE(cv::imwrite(dir + "/depth/000000.png", cv::Mat(240, 320, CV_16UC1, cv::Scalar(900))));
+    RgbdFolderReader reader;
+    REQUIRE(reader.open(dir.c_str()));
+    CHECK(reader.next(*f) == ReadStatus::Error);
+    CHECK(std::string(reader.error()) ==
+          dir + "/intrinsics.txt: principal point 600,120 outside the 320x240 image");
+  }
+}
+
+TEST_CASE("RGB-D and OTB writers refuse a folder that holds a recording", "[opencv][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "seq";
+  writeRgbd(dir, "moving", 3);
+  RgbdFolderWriter rgbd;
+  CHECK_FALSE(rgbd.open(dir.c_str()));
+  CHECK(std::string(rgbd.error()) ==
+        dir + ": already holds a recording (rgb); write to a new or empty folder");
+  OtbFolderWriter otb;
+  CHECK_FALSE(otb.open(dir.c_str()));
+  CHECK(std::string(otb.error()).find("already holds a recording") != std::string::npos);
+  RgbdFolderReader reader;  // untouched
+  REQUIRE(reader.open(dir.c_str()));
+  CHECK(reader.frameCount() == 3);
+}
+
+TEST_CASE("BoBoT video writer: frame size, write errors, frame rate", "[opencv][bobot][bad]") {
+  TempDir tmp;
+  auto slot = std::make_unique<FrameSlot>();
+  SECTION("a frame of another size is refused (OpenCV would drop it)") {
+    BobotVideoWriter w;
+    REQUIRE(w.open((tmp / "v.avi").c_str(), 30.0));
+    auto src = synth("moving", 1);
+    REQUIRE(src->next(*slot) == ReadStatus::Ok);
+    REQUIRE(w.write(*slot));
+    slot->rgb.resize(320, 240);
+    CHECK_FALSE(w.write(*slot));
+    CHECK(std::string(w.error()) == tmp / "v.avi" + ": frame 1 is 320x240, the video is 640x480");
+  }
+  SECTION("a file cut short by a size limit is an error at close") {
+    struct rlimit old {};
+    REQUIRE(::getrlimit(RLIMIT_FSIZE, &old) == 0);
+    auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+    BobotVideoWriter w;
+    REQUIRE(w.open((tmp / "capped.avi").c_str(), 30.0));
+    struct rlimit capped = old;
+    capped.rlim_cur = 400000;  // about 10 frames of MJPG
+    REQUIRE(::setrlimit(RLIMIT_FSIZE, &capped) == 0);
+    auto src = synth("moving", 40);
+    bool wrote = true;
+    while (src->next(*slot) == ReadStatus::Ok) wrote = wrote && w.write(*slot);
+    const bool closed = w.close();
+    REQUIRE(::setrlimit(RLIMIT_FSIZE, &old) == 0);
+    std::signal(SIGXFSZ, oldHandler);
+    CHECK(wrote);  // OpenCV does not tell
+    CHECK_FALSE(closed);
+    const std::string e = w.error();
+    INFO(e);
+    CHECK(e.find(tmp / "capped.avi" + ": only ") == 0);
+    CHECK(e.find(" of 40 frames written could be read back") != std::string::npos);
+  }
+  SECTION("the source's frame rate: frames read back 1/30 s apart") {
+    auto src = synth("moving", 3);
+    BobotVideoWriter w;
+    REQUIRE(w.open((tmp / "v.avi").c_str(), src->nominalFps()));
+    while (src->next(*slot) == ReadStatus::Ok) REQUIRE(w.write(*slot));
+    REQUIRE(w.close());
+    BobotVideoReader r;
+    REQUIRE(r.open((tmp / "v.avi").c_str()));
+    CHECK(r.nominalFps() == Approx(30.0));
+    for (uint64_t want : {0u, 33333u, 66667u}) {
+      REQUIRE(r.next(*slot) == ReadStatus::Ok);
+      CHECK(slot->timeUs == want);
+    }
+  }
+}
+
+TEST_CASE("BoBoT video reader: a video shorter than its ground truth is an error",
+          "[opencv][bobot][bad]") {
+  TempDir tmp;
+  const std::string avi = tmp / "cut.avi";
+  auto slot = std::make_unique<FrameSlot>();
+  {
+    auto src = synth("moving", 20);
+    BobotVideoWriter w;
+    REQUIRE(w.open(avi.c_str(), 30.0));
+    while (src->next(*slot) == ReadStatus::Ok) REQUIRE(w.write(*slot));
+    REQUIRE(w.close());
+  }
+  // Cut the file to half its size: the header may announce 20 frames or none (the index
+  // at the end is gone); either way the ground truth holds 20 boxes.
+  const std::string bytes = test::readText(avi);
+  test::writeText(avi, bytes.substr(0, bytes.size() / 2));
+  BobotVideoReader r;
+  REQUIRE(r.open(avi.c_str()));
+  int n = 0;
+  ReadStatus st;
+  while ((st = r.next(*slot)) == ReadStatus::Ok) ++n;
+  CHECK(st == ReadStatus::Error);
+  CHECK(n < 20);
+  CHECK(std::string(r.error()) == avi + ": video ends at frame " + std::to_string(n) + " of 20");
+  SourceOptions skip;  // skipping counts the missing frames instead
+  skip.skipBadFrames = true;
+  BobotVideoReader s;
+  REQUIRE(s.open(avi.c_str(), skip));
+  int m = 0;
+  while (s.next(*slot) == ReadStatus::Ok) ++m;
+  CHECK(m == n);
+  CHECK(s.skippedFrames() == 20 - n);
 }

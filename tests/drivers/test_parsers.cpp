@@ -72,6 +72,20 @@ TEST_CASE("fakenect INDEX names", "[parsers]") {
   }
 }
 
+TEST_CASE("fakenect INDEX seconds out of range are refused", "[parsers]") {
+  char err[160] = "";
+  IndexEntry e;
+  for (const char* bad : {"r-1e300-0.ppm", "r-10000000001.0-0.ppm", "r--1.0-0.ppm"}) {
+    INFO(bad);
+    CHECK_FALSE(parseIndexLine(bad, std::strlen(bad), &e, err, sizeof err));
+  }
+  const std::string huge = "r-1e300-0.ppm";
+  CHECK_FALSE(parseIndexLine(huge.data(), huge.size(), &e, err, sizeof err));
+  CHECK(std::string(err).find("seconds 1e+300 outside 0..10000000000") != std::string::npos);
+  const std::string ok = "r-9999999999.5-0.ppm";
+  CHECK(parseIndexLine(ok.data(), ok.size(), &e, err, sizeof err));
+}
+
 TEST_CASE("ground truth lines: BoBoT and OTB", "[parsers][gt]") {
   char err[200] = "";
   GroundTruth gt;
@@ -106,6 +120,24 @@ TEST_CASE("ground truth lines: BoBoT and OTB", "[parsers][gt]") {
   CHECK_FALSE(gt.parse(nan.data(), nan.size(), "o.txt", GtFormat::Otb, err, sizeof err));
 }
 
+TEST_CASE("too few numbers on a line: the count, not a garbled character", "[parsers][gt]") {
+  char err[200] = "";
+  GroundTruth gt;
+  const std::string bobot = "hdr\n0 0.1 0.1 0.1 0.1\n1 0.1 0.2 0.3\n";
+  CHECK_FALSE(gt.parse(bobot.data(), bobot.size(), "g.txt", GtFormat::Bobot, err, sizeof err));
+  CHECK(std::string(err) == "g.txt:3: expected 4 numbers, found 3");
+  const std::string otb = "1,2,3\n";
+  CHECK_FALSE(gt.parse(otb.data(), otb.size(), "o.txt", GtFormat::Otb, err, sizeof err));
+  CHECK(std::string(err) == "o.txt:1: expected 4 numbers, found 3");
+  const std::string ctl = "1,2\x01,3,4\n";
+  CHECK_FALSE(gt.parse(ctl.data(), ctl.size(), "o.txt", GtFormat::Otb, err, sizeof err));
+  CHECK(std::string(err) == "o.txt:1: unexpected byte 0x01 after number 2");
+  CameraIntrinsics k;
+  const std::string three = "518 519 325.5\n";
+  CHECK_FALSE(parseIntrinsics(three.data(), three.size(), &k, err, sizeof err));
+  CHECK(std::string(err) == "expected 4 numbers, found 3");
+}
+
 TEST_CASE("intrinsics.txt", "[parsers]") {
   char err[128] = "";
   CameraIntrinsics k;
@@ -117,6 +149,24 @@ TEST_CASE("intrinsics.txt", "[parsers]") {
   CHECK_FALSE(parseIntrinsics(bad.data(), bad.size(), &k, err, sizeof err));
   const std::string zero = "0 519 325 253\n";
   CHECK_FALSE(parseIntrinsics(zero.data(), zero.size(), &k, err, sizeof err));
+}
+
+TEST_CASE("intrinsics.txt: implausible focal lengths and principal points", "[parsers]") {
+  char err[128] = "";
+  CameraIntrinsics k;
+  const std::string tiny = "1e-30 1e-30 325.5 253.5\n";
+  CHECK_FALSE(parseIntrinsics(tiny.data(), tiny.size(), &k, err, sizeof err));
+  CHECK(std::string(err) == "fx 1e-30 outside 10..100000 px");
+  const std::string huge = "518 1e6 325.5 253.5\n";
+  CHECK_FALSE(parseIntrinsics(huge.data(), huge.size(), &k, err, sizeof err));
+  CHECK(std::string(err).find("fy 1e+06 outside") == 0);
+  const std::string cxOut = "518 519 -5000 253.5\n";
+  CHECK_FALSE(parseIntrinsics(cxOut.data(), cxOut.size(), &k, err, sizeof err));
+  CHECK(std::string(err).find("principal point -5000,253.5 outside") == 0);
+  const std::string cyOut = "518 519 325 481\n";
+  CHECK_FALSE(parseIntrinsics(cyOut.data(), cyOut.size(), &k, err, sizeof err));
+  const std::string edge = "10 100000 0 480\n";
+  CHECK(parseIntrinsics(edge.data(), edge.size(), &k, err, sizeof err));
 }
 
 TEST_CASE("frame counts of a spec's :frames suffix", "[parsers]") {

@@ -27,6 +27,7 @@ bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
   _seconds.clear();
   _frames.clear();
   _next = _emitted = _skipped = 0;
+  _width = _height = 0;
   _error[0] = '\0';
 
   const std::string indexPath = _dir + "/INDEX.txt";
@@ -40,6 +41,7 @@ bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
   int lastDepth = -1;
   std::vector<int> waitingForDepth;  // colour entries seen before any depth entry
   char why[200];
+  int prevLine = 0;
   while (rec::nextLine(t, text.size(), &pos, &line, &len)) {
     ++lineNo;
     if (rec::blankLine(line, len)) continue;
@@ -48,6 +50,16 @@ bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
       std::snprintf(_error, sizeof _error, "%s:%d: %s", indexPath.c_str(), lineNo, why);
       return false;
     }
+    // Capture order: a time going back (a reordered INDEX, a clock step) would give
+    // frames times out of order; refuse it rather than guess.
+    if (!_seconds.empty() && e.seconds < _seconds.back()) {
+      std::snprintf(_error, sizeof _error,
+                    "%s:%d: time %.6f s goes back from %.6f s on line %d (entries must be in "
+                    "capture order)",
+                    indexPath.c_str(), lineNo, e.seconds, _seconds.back(), prevLine);
+      return false;
+    }
+    prevLine = lineNo;
     const int entry = static_cast<int>(_files.size());
     _files.emplace_back(line, len);
     _seconds.push_back(e.seconds);
@@ -65,6 +77,12 @@ bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
     return false;
   }
   _t0 = _seconds.front();
+  // Rounded to 1/1000 frame/s: the %f times carry microseconds only.
+  const double span = _seconds[static_cast<size_t>(_frames.back().rgbEntry)] -
+                      _seconds[static_cast<size_t>(_frames.front().rgbEntry)];
+  _fps = _frames.size() > 1 && span > 0.0
+             ? std::round(static_cast<double>(_frames.size() - 1) / span * 1000.0) / 1000.0
+             : 0.0;
 
   const std::string gtPath = opt.gtPath ? std::string(opt.gtPath) : _dir + "/groundtruth.txt";
   if (opt.gtPath || rec::isFile(gtPath.c_str())) {
@@ -90,8 +108,16 @@ bool FakenectReader::readFrame(const Frame& f, FrameSlot& out) {
   rec::PnmHeader h;
   entryPath(f.rgbEntry, path, sizeof path);
   if (!rec::readFile(path, _buf, _error, sizeof _error)) return false;
-  if (!rec::parsePnmHeader(_buf.data(), _buf.size(), &h, why, sizeof why) ||
-      !out.rgb.resize(h.width, h.height) ||
+  if (!rec::parsePnmHeader(_buf.data(), _buf.size(), &h, why, sizeof why)) {
+    std::snprintf(_error, sizeof _error, "%s: %s", path, why);
+    return false;
+  }
+  if (_width > 0 && (h.width != _width || h.height != _height)) {
+    std::snprintf(_error, sizeof _error, "%s: %dx%d, the sequence is %dx%d", path, h.width,
+                  h.height, _width, _height);
+    return false;
+  }
+  if (!out.rgb.resize(h.width, h.height) ||
       !rec::decodePnmRgb(_buf.data(), _buf.size(), h, out.rgb.data(), why, sizeof why)) {
     std::snprintf(_error, sizeof _error, "%s: %s", path, why);
     return false;
@@ -133,11 +159,14 @@ ReadStatus FakenectReader::next(FrameSlot& out) {
       }
       return ReadStatus::Error;
     }
+    if (_width == 0) {
+      _width = out.rgb.width();
+      _height = out.rgb.height();
+    }
     out.index = i;
+    // open() made the times non-decreasing and at most kMaxIndexSeconds: 0..1e16 us.
     out.timeUs = static_cast<uint64_t>(
-        std::llround((_seconds[static_cast<size_t>(f.rgbEntry)] - _t0) * 1e6 < 0
-                         ? 0.0
-                         : (_seconds[static_cast<size_t>(f.rgbEntry)] - _t0) * 1e6));
+        std::llround((_seconds[static_cast<size_t>(f.rgbEntry)] - _t0) * 1e6));
     // Kinect v1 intrinsics, scaled to the image (recordings carry none).
     const float sx = static_cast<float>(out.rgb.width()) / 640.f;
     const float sy = static_cast<float>(out.rgb.height()) / 480.f;
@@ -162,6 +191,7 @@ bool FakenectWriter::open(const char* dir, const char* sequenceName) {
   _error[0] = '\0';
   if (_index) std::fclose(_index);
   _index = nullptr;
+  if (rec::holdsRecording(dir, err, errLen)) return false;
   if (!rec::makeDirectories(dir, err, errLen)) return false;
   _dir = dir;
   _name = sequenceName ? sequenceName : baseName(_dir);

@@ -11,7 +11,9 @@
 namespace cuetrack::rec {
 
 bool readFile(const char* path, std::vector<uint8_t>& buf, char* err, size_t errLen) {
-  const int fd = ::open(path, O_RDONLY | O_CLOEXEC);
+  // O_NONBLOCK: a FIFO (or device) in place of a file must not block open(); it is
+  // refused below. Reads of a regular file ignore the flag.
+  const int fd = ::open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) {
     std::snprintf(err, errLen, "%s: cannot open (%s)", path, std::strerror(errno));
     return false;
@@ -107,6 +109,24 @@ bool makeDirectories(const char* path, char* err, size_t errLen) {
     return false;
   }
   return true;
+}
+
+bool holdsRecording(const char* dir, char* err, size_t errLen) {
+  static const char* const kNames[] = {
+      "INDEX.txt",     "rgb", "depth", "img", "groundtruth.txt", "groundtruth_rect.txt",
+      "intrinsics.txt"};
+  for (const char* name : kNames) {
+    char path[1024];
+    std::snprintf(path, sizeof path, "%s/%s", dir, name);
+    struct stat st {};
+    if (::lstat(path, &st) == 0) {
+      std::snprintf(err, errLen,
+                    "%s: already holds a recording (%s); write to a new or empty folder", dir,
+                    name);
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace cuetrack::rec

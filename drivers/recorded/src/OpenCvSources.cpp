@@ -105,6 +105,7 @@ bool BobotVideoReader::open(const char* aviPath, const SourceOptions& opt) {
   _name = stem(_path);
   _opt = opt;
   _next = _skipped = 0;
+  _gt = GroundTruth{};
   _error[0] = '\0';
   if (!rec::isFile(aviPath)) {
     std::snprintf(_error, sizeof _error, "%s: no such video file", aviPath);
@@ -146,10 +147,17 @@ ReadStatus BobotVideoReader::next(FrameSlot& out) {
       return ReadStatus::Error;
     }
     if (!_video->cap.read(_img->bgr) || _img->bgr.empty()) {
-      // Fewer frames than the container announced: a damaged file, not a clean end.
-      if (_frameCount > 0 && _next < _frameCount && !_opt.skipBadFrames) {
-        std::snprintf(_error, sizeof _error, "%s: frame %d of %d cannot be decoded", _path.c_str(),
-                      _next, _frameCount);
+      // Fewer frames than the container announced, or than the ground truth has boxes
+      // (a truncated file's header often announces none): a damaged file, not a clean end.
+      const int expected = std::max(_frameCount, _gt.count());
+      if (_next < expected) {
+        if (_opt.skipBadFrames) {
+          _skipped += expected - _next;
+          _next = expected;
+          return ReadStatus::End;
+        }
+        std::snprintf(_error, sizeof _error, "%s: video ends at frame %d of %d", _path.c_str(),
+                      _next, expected);
         return ReadStatus::Error;
       }
       return ReadStatus::End;
@@ -203,6 +211,7 @@ bool RgbdFolderReader::open(const char* dir, const SourceOptions& opt) {
   _name = stem(_dir + ".x");
   _opt = opt;
   _next = _emitted = _skipped = 0;
+  _width = _height = 0;
   _error[0] = '\0';
   if (!listImages(_dir + "/rgb", &_rgbFiles, _error, sizeof _error)) return false;
   if (!listImages(_dir + "/depth", &_depthFiles, _error, sizeof _error)) return false;
@@ -233,6 +242,7 @@ bool OtbFolderReader::open(const char* dir, const SourceOptions& opt) {
   _name = stem(_dir + ".x");
   _opt = opt;
   _next = _emitted = _skipped = 0;
+  _width = _height = 0;
   _error[0] = '\0';
   _depthFiles.clear();
   _haveIntrinsics = false;
@@ -247,21 +257,38 @@ ReadStatus ImageFolderReader::next(FrameSlot& out) {
     const int i = _next++;
     const std::string& rgbPath = _rgbFiles[static_cast<size_t>(i)];
     bool ok = true;
-    _img->bgr = cv::imread(rgbPath, cv::IMREAD_COLOR);
-    if (_img->bgr.empty()) {
+    // imread would block on a FIFO and read a device: regular files only.
+    if (!rec::isFile(rgbPath.c_str())) {
+      std::snprintf(_error, sizeof _error, "%s: not a regular file", rgbPath.c_str());
+      ok = false;
+    } else if ((_img->bgr = cv::imread(rgbPath, cv::IMREAD_COLOR)).empty()) {
       std::snprintf(_error, sizeof _error,
                     "%s: cannot decode image (missing, truncated or corrupt)", rgbPath.c_str());
+      ok = false;
+    } else if (_width > 0 && (_img->bgr.cols != _width || _img->bgr.rows != _height)) {
+      std::snprintf(_error, sizeof _error, "%s: %dx%d, the sequence is %dx%d", rgbPath.c_str(),
+                    _img->bgr.cols, _img->bgr.rows, _width, _height);
       ok = false;
     } else if (!copyColour(_img->bgr, _img->rgb, out)) {
       std::snprintf(_error, sizeof _error, "%s: %dx%d is larger than %dx%d", rgbPath.c_str(),
                     _img->bgr.cols, _img->bgr.rows, kMaxImageWidth, kMaxImageHeight);
       ok = false;
+    } else if (_haveIntrinsics && (_intrinsics.cx > static_cast<float>(out.rgb.width()) ||
+                                   _intrinsics.cy > static_cast<float>(out.rgb.height()))) {
+      // parseIntrinsics checked fx, fy and cx, cy >= 0; the image size is known only now.
+      std::snprintf(_error, sizeof _error,
+                    "%s/intrinsics.txt: principal point %g,%g outside the %dx%d image",
+                    _dir.c_str(), static_cast<double>(_intrinsics.cx),
+                    static_cast<double>(_intrinsics.cy), out.rgb.width(), out.rgb.height());
+      ok = false;
     }
     out.hasDepth = false;
     if (ok && !_depthFiles.empty()) {
       const std::string& dPath = _depthFiles[static_cast<size_t>(i)];
-      _img->depth = cv::imread(dPath, cv::IMREAD_ANYDEPTH);
-      if (_img->depth.empty()) {
+      if (!rec::isFile(dPath.c_str())) {
+        std::snprintf(_error, sizeof _error, "%s: not a regular file", dPath.c_str());
+        ok = false;
+      } else if ((_img->depth = cv::imread(dPath, cv::IMREAD_ANYDEPTH)).empty()) {
         std::snprintf(_error, sizeof _error,
                       "%s: cannot decode depth image (missing, truncated or corrupt)",
                       dPath.c_str());
@@ -290,6 +317,10 @@ ReadStatus ImageFolderReader::next(FrameSlot& out) {
       }
       return ReadStatus::Error;
     }
+    if (_width == 0) {
+      _width = out.rgb.width();
+      _height = out.rgb.height();
+    }
     out.index = i;
     out.timeUs = static_cast<uint64_t>(std::llround(i * 1e6 / _fps));
     out.intrinsics =
@@ -312,6 +343,7 @@ bool RgbdFolderWriter::open(const char* dir, const char* sequenceName) {
   _count = 0;
   _gtOpen = false;
   _wroteIntrinsics = false;
+  if (rec::holdsRecording(dir, err, errLen)) return false;
   return rec::makeDirectories((_dir + "/rgb").c_str(), err, errLen) &&
          rec::makeDirectories((_dir + "/depth").c_str(), err, errLen);
 }
@@ -382,6 +414,7 @@ bool OtbFolderWriter::open(const char* dir) {
   _dir = dir;
   _count = 0;
   _error[0] = '\0';
+  if (rec::holdsRecording(dir, _error, sizeof _error)) return false;
   if (!rec::makeDirectories((_dir + "/img").c_str(), _error, sizeof _error)) return false;
   return _gt.open((_dir + "/groundtruth_rect.txt").c_str(), GtFormat::Otb, nullptr, _error,
                   sizeof _error);
@@ -425,9 +458,15 @@ bool BobotVideoWriter::open(const char* aviPath, double fps) {
   _path = aviPath;
   _fps = fps;
   _count = 0;
+  _width = _height = 0;
   _error[0] = '\0';
+  if (_video->writer.isOpened()) _video->writer.release();
   if (!endsWithAvi(_path)) {
     std::snprintf(_error, sizeof _error, "%s: the video name must end in .avi", aviPath);
+    return false;
+  }
+  if (!(fps >= 1.0 && fps <= 1000.0)) {
+    std::snprintf(_error, sizeof _error, "%s: frame rate %g outside 1..1000", aviPath, fps);
     return false;
   }
   const std::string gtPath = _path.substr(0, _path.size() - 4) + ".gt.txt";
@@ -438,11 +477,21 @@ bool BobotVideoWriter::open(const char* aviPath, double fps) {
 bool BobotVideoWriter::write(const FrameSlot& frame) {
   const int w = frame.rgb.width(), h = frame.rgb.height();
   if (!_video->writer.isOpened()) {
-    if (!_video->writer.open(_path, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
+    if (w <= 0 || h <= 0 ||
+        !_video->writer.open(_path, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
                              _fps, cv::Size(w, h))) {
-      std::snprintf(_error, sizeof _error, "%s: cannot create video (MJPG)", _path.c_str());
+      std::snprintf(_error, sizeof _error, "%s: cannot create video (MJPG, %dx%d)", _path.c_str(),
+                    w, h);
       return false;
     }
+    _width = w;
+    _height = h;
+  }
+  // OpenCV drops a frame of another size without a word: refuse it here.
+  if (w != _width || h != _height) {
+    std::snprintf(_error, sizeof _error, "%s: frame %d is %dx%d, the video is %dx%d", _path.c_str(),
+                  _count, w, h, _width, _height);
+    return false;
   }
   cv::Mat rgb(h, w, CV_8UC3, const_cast<Rgb8*>(frame.rgb.data()));
   cv::cvtColor(rgb, _video->bgr, cv::COLOR_RGB2BGR);
@@ -454,9 +503,23 @@ bool BobotVideoWriter::write(const FrameSlot& frame) {
 }
 
 bool BobotVideoWriter::close() {
+  const bool wasOpen = _video->writer.isOpened();
   _video->writer.release();
   if (!_gt.close()) {
     std::snprintf(_error, sizeof _error, "%s: ground truth write failed", _path.c_str());
+    return false;
+  }
+  if (!wasOpen) return true;
+  // cv::VideoWriter reports no write error (a full disk, a file size limit): read the
+  // video back and count the frames that decode.
+  cv::VideoCapture cap;
+  int n = 0;
+  if (cap.open(_path, cv::CAP_FFMPEG) && cap.isOpened())
+    while (n < _count && cap.grab()) ++n;
+  if (n != _count) {
+    std::snprintf(_error, sizeof _error,
+                  "%s: only %d of %d frames written could be read back (disk full or write error)",
+                  _path.c_str(), n, _count);
     return false;
   }
   return true;

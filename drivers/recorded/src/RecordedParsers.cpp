@@ -54,7 +54,13 @@ bool parseFloats(const char* s, float* out, int n, bool allowCommas, char* err, 
     p = end;
     // Separator required between numbers.
     if (i + 1 < n && !(isSpace(*p) || (allowCommas && *p == ','))) {
-      fail(err, errLen, "unexpected character '%c' after number %d", *p, i + 1);
+      if (*p == '\0')
+        fail(err, errLen, "expected %d numbers, found %d", n, i + 1);
+      else if (*p > ' ' && *p < 127)
+        fail(err, errLen, "unexpected character '%c' after number %d", *p, i + 1);
+      else
+        fail(err, errLen, "unexpected byte 0x%02x after number %d",
+             static_cast<unsigned>(static_cast<unsigned char>(*p)), i + 1);
       return false;
     }
   }
@@ -183,8 +189,13 @@ bool parseIndexLine(const char* line, size_t len, IndexEntry* out, char* err, si
   }
   char* end = nullptr;
   const double sec = std::strtod(buf + 2, &end);
-  if (end == buf + 2 || *end != '-' || !std::isfinite(sec) || sec < 0.0) {
+  if (end == buf + 2 || *end != '-' || !std::isfinite(sec)) {
     fail(err, errLen, "INDEX entry '%.60s': bad seconds field", buf);
+    return false;
+  }
+  if (!(sec >= 0.0 && sec <= kMaxIndexSeconds)) {
+    fail(err, errLen, "INDEX entry '%.60s': seconds %g outside 0..%.0f", buf, sec,
+         kMaxIndexSeconds);
     return false;
   }
   const char* ts = end + 1;
@@ -258,8 +269,17 @@ bool parseIntrinsics(const char* text, size_t len, CameraIntrinsics* out, char* 
     if (!copyLine(line, lineLen, buf, sizeof buf, err, errLen)) return false;
     float v[4];
     if (!parseFloats(buf, v, 4, true, err, errLen)) return false;
-    if (!(v[0] > 0.f) || !(v[1] > 0.f)) {
-      fail(err, errLen, "focal lengths must be > 0");
+    for (int k = 0; k < 2; ++k)
+      if (!(v[k] >= kMinFocalPx && v[k] <= kMaxFocalPx)) {
+        fail(err, errLen, "%s %g outside %g..%g px", k == 0 ? "fx" : "fy",
+             static_cast<double>(v[k]), static_cast<double>(kMinFocalPx),
+             static_cast<double>(kMaxFocalPx));
+        return false;
+      }
+    if (!(v[2] >= 0.f && v[2] <= static_cast<float>(kMaxImageWidth)) ||
+        !(v[3] >= 0.f && v[3] <= static_cast<float>(kMaxImageHeight))) {
+      fail(err, errLen, "principal point %g,%g outside 0,0..%d,%d px", static_cast<double>(v[2]),
+           static_cast<double>(v[3]), kMaxImageWidth, kMaxImageHeight);
       return false;
     }
     *out = {v[0], v[1], v[2], v[3]};

@@ -51,6 +51,8 @@ class FrameSource {
   virtual const char* name() const = 0;
   // Frames in the source if known, else -1.
   virtual int frameCount() const { return -1; }
+  // The source's frame rate [frames/s] (a writer's container rate), 0 if unknown.
+  virtual double nominalFps() const { return 0.0; }
   // Frames skipped as unreadable so far (with the skip-bad-frames option).
   virtual int skippedFrames() const { return 0; }
 };

@@ -32,6 +32,8 @@ class FakenectReader final : public FrameSource {
   const char* error() const override { return _error; }
   const char* name() const override { return _name.c_str(); }
   int frameCount() const override { return static_cast<int>(_frames.size()); }
+  // Colour frames per second over the recording (first to last colour entry), 0 for one frame.
+  double nominalFps() const override { return _fps; }
   int skippedFrames() const override { return _skipped; }
 
  private:
@@ -51,7 +53,9 @@ class FakenectReader final : public FrameSource {
   int _next = 0;
   int _emitted = 0;
   int _skipped = 0;
+  int _width = 0, _height = 0;  // of the first frame read: every frame must match
   double _t0 = 0.0;
+  double _fps = 0.0;
   std::vector<uint8_t> _buf;
   kinect::RawToMmTable _rawToMm;
   char _error[512] = "";

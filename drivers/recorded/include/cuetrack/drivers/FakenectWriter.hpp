@@ -24,6 +24,7 @@ class FakenectWriter {
   FakenectWriter& operator=(const FakenectWriter&) = delete;
   ~FakenectWriter();
   // Creates dir (and parents); sequenceName heads groundtruth.txt (default: dir's name).
+  // Refuses a dir that already holds a recording (rec::holdsRecording).
   bool open(const char* dir, const char* sequenceName = nullptr);
   bool write(const FrameSlot& frame);
   bool close();

@@ -9,6 +9,7 @@
 namespace cuetrack::rec {
 
 // Replaces buf's contents with the file's bytes. On failure writes "path: reason" to err.
+// Anything but a regular file (a FIFO, a device, a folder) is refused without blocking.
 bool readFile(const char* path, std::vector<uint8_t>& buf, char* err, size_t errLen);
 // Writes all bytes (creating/truncating the file). On failure writes "path: reason".
 bool writeFile(const char* path, const void* data, size_t len, char* err, size_t errLen);
@@ -18,5 +19,10 @@ bool isDirectory(const char* path);
 bool isFile(const char* path);
 // mkdir -p; on failure writes "path: reason".
 bool makeDirectories(const char* path, char* err, size_t errLen);
+// True (with "dir: already holds a recording (NAME); ..." in err) when dir holds a
+// fakenect, RGB-D or OTB recording's file or folder: INDEX.txt, rgb/, depth/, img/,
+// groundtruth.txt, groundtruth_rect.txt or intrinsics.txt. The writers refuse such a
+// folder: frames of the old recording would mix with the new ones.
+bool holdsRecording(const char* dir, char* err, size_t errLen);
 
 }  // namespace cuetrack::rec

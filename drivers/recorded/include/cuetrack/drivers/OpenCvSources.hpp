@@ -30,6 +30,7 @@ class BobotVideoReader final : public FrameSource {
   const char* error() const override { return _error; }
   const char* name() const override { return _name.c_str(); }
   int frameCount() const override { return _frameCount; }
+  double nominalFps() const override { return _fps; }
   int skippedFrames() const override { return _skipped; }
   const GroundTruth& groundTruth() const { return _gt; }
 
@@ -56,6 +57,7 @@ class ImageFolderReader : public FrameSource {
   const char* error() const override { return _error; }
   const char* name() const override { return _name.c_str(); }
   int frameCount() const override { return static_cast<int>(_rgbFiles.size()); }
+  double nominalFps() const override { return _fps; }
   int skippedFrames() const override { return _skipped; }
 
  protected:
@@ -70,6 +72,7 @@ class ImageFolderReader : public FrameSource {
   int _next = 0;
   int _emitted = 0;
   int _skipped = 0;
+  int _width = 0, _height = 0;  // of the first frame read: every frame must match
   std::unique_ptr<CvImages> _img;
   char _error[768] = "";
 };
@@ -105,6 +108,7 @@ class StillPanReader final : public FrameSource {
   const char* error() const override { return _error; }
   const char* name() const override { return _name.c_str(); }
   int frameCount() const override { return _frames; }
+  double nominalFps() const override { return 30.0; }
 
  private:
   std::unique_ptr<CvImages> _img;
@@ -121,6 +125,7 @@ class RgbdFolderWriter {
  public:
   RgbdFolderWriter() = default;
   // Creates dir/rgb and dir/depth; sequenceName heads groundtruth.txt (default: dir's name).
+  // Refuses a dir that already holds a recording (rec::holdsRecording).
   bool open(const char* dir, const char* sequenceName = nullptr);
   bool write(const FrameSlot& frame);
   bool close();
@@ -152,12 +157,14 @@ class OtbFolderWriter {
 };
 
 // BoBoT-style video: PATH.avi (Motion-JPEG, colour only) + PATH.gt.txt (BoBoT format,
-// header "./NAME.avi"). fps is the container's rate.
+// header "./NAME.avi"). fps is the container's rate (1..1000). Every frame must have the
+// first one's size; close() reads the video back and fails unless every frame written
+// decodes (OpenCV's writer reports no write error, e.g. on a full disk).
 class BobotVideoWriter {
  public:
   BobotVideoWriter();
   ~BobotVideoWriter();
-  bool open(const char* aviPath, double fps = 25.0);
+  bool open(const char* aviPath, double fps = 30.0);
   bool write(const FrameSlot& frame);
   bool close();
   const char* error() const { return _error; }
@@ -167,8 +174,9 @@ class BobotVideoWriter {
   std::unique_ptr<Video> _video;
   std::string _path;
   GtWriter _gt;
-  double _fps = 25.0;
+  double _fps = 30.0;
   int _count = 0;
+  int _width = 0, _height = 0;
   char _error[512] = "";
 };
 

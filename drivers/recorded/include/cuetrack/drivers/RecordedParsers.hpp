@@ -41,7 +41,9 @@ struct IndexEntry {
   double seconds = 0.0;    // host time of capture [s]
   uint32_t timestamp = 0;  // device timestamp (opaque)
 };
-// line excludes the newline ('\r' allowed at its end). False for a malformed name.
+// line excludes the newline ('\r' allowed at its end). False for a malformed name or
+// seconds outside 0..kMaxIndexSeconds (host time: Unix seconds up to the year 2286).
+inline constexpr double kMaxIndexSeconds = 1e10;
 bool parseIndexLine(const char* line, size_t len, IndexEntry* out, char* err, size_t errLen);
 
 // ---- Ground truth -------------------------------------------------------------
@@ -49,7 +51,10 @@ bool parseIndexLine(const char* line, size_t len, IndexEntry* out, char* err, si
 bool parseBobotLine(const char* line, size_t len, int* idx, float box[4], char* err, size_t errLen);
 // OTB line "x,y,w,h" (comma and/or whitespace separated), 1-based pixels.
 bool parseOtbLine(const char* line, size_t len, float box[4], char* err, size_t errLen);
-// intrinsics.txt: "fx fy cx cy" [px].
+// intrinsics.txt: "fx fy cx cy" [px]. fx, fy must lie in kMinFocalPx..kMaxFocalPx and
+// cx, cy in 0..kMaxImageWidth/Height (the readers check them against the image as well).
+inline constexpr float kMinFocalPx = 10.f;
+inline constexpr float kMaxFocalPx = 100000.f;
 bool parseIntrinsics(const char* text, size_t len, CameraIntrinsics* out, char* err, size_t errLen);
 
 // The frame count of a spec's ":frames" suffix: a whole number in 1..kMaxSpecFrames.

@@ -150,6 +150,7 @@ class SyntheticSource final : public FrameSource {
   const char* error() const override { return _error; }
   const char* name() const override { return _spec.name; }
   int frameCount() const override { return _spec.frameCount; }
+  double nominalFps() const override { return static_cast<double>(_spec.fps); }
 
   // Renders frame `index` (0-based) without advancing; next() calls it in sequence.
   bool render(int index, FrameSlot& out);
