@@ -125,6 +125,17 @@ bool haveSocat() {
   return fileExists("/usr/bin/socat");
 }
 
+// Runs cuetrack on a recording, CSV to `csv`, stderr to `err`; its exit status.
+int runOnRecording(const std::string& rec, const std::string& csv, const std::string& err) {
+  ChildProcess app;
+  const char* argv[] = {CUETRACK_APP_BIN, "--source", rec.c_str(), "--out",
+                        csv.c_str(),      "--quiet",  nullptr};
+  REQUIRE(app.start(argv, nullptr, err.c_str()));
+  int status = -1;
+  REQUIRE(app.wait(kAppTimeoutMs, &status));
+  return status;
+}
+
 }  // namespace
 
 TEST_CASE("tracks sent by cuetrack over a pty equal the tracks cuetrack-listen decodes") {
@@ -385,12 +396,7 @@ TEST_CASE("cuetrack runs on a fakenect recording and takes the target from its g
     REQUIRE(writer.close());
   }
   const std::string csv = tmp.file("out.csv"), appErr = tmp.file("app.err");
-  ChildProcess app;
-  const char* argv[] = {CUETRACK_APP_BIN, "--source", rec.c_str(), "--out",
-                        csv.c_str(),      "--quiet",  nullptr};
-  REQUIRE(app.start(argv, nullptr, appErr.c_str()));
-  int status = -1;
-  REQUIRE(app.wait(kAppTimeoutMs, &status));
+  int status = runOnRecording(rec, csv, appErr);
   INFO(slurp(appErr));
   REQUIRE(status == 0);
   const std::vector<std::string> rows = lines(slurp(csv));
@@ -422,12 +428,7 @@ TEST_CASE("a recording whose frames change size, or whose ground truth is refuse
                            "/groundtruth.txt";
   REQUIRE(std::system(make.c_str()) == 0);
   const std::string csv = tmp.file("out.csv"), appErr = tmp.file("app.err");
-  ChildProcess app;
-  const char* argv[] = {CUETRACK_APP_BIN, "--source", rec.c_str(), "--out",
-                        csv.c_str(),      "--quiet",  nullptr};
-  REQUIRE(app.start(argv, nullptr, appErr.c_str()));
-  int status = -1;
-  REQUIRE(app.wait(kAppTimeoutMs, &status));
+  int status = runOnRecording(rec, csv, appErr);
   INFO(slurp(appErr));
   CHECK(status == 2);  // source failed: the tracker would skip the frame, saying "tracking"
   CHECK(slurp(appErr).find(rec) != std::string::npos);

@@ -45,6 +45,13 @@ struct Scene {
 };
 Scene gScene;
 
+// The scene drawn with a textured target at `target`, and the anchor's template taken there.
+void captureOn(const Box& target, TemplateAnchor* anchor) {
+  gScene.draw(target, 11, true);
+  anchor->configure(TemplateAnchor::Params{});
+  REQUIRE(anchor->capture(gScene.channels.tables(), target));
+}
+
 float sizeError(const Box& a, const Box& b) {
   return std::fabs(std::log(a.w / b.w)) + std::fabs(std::log(a.h / b.h));
 }
@@ -90,10 +97,8 @@ TEST_CASE("the size filter damps jitter and follows a steady zoom", "[core][esti
 TEST_CASE("the template anchor pulls a drifted size and centre back to the init box",
           "[core][estimate]") {
   const Box target{50.f, 30.f, 48.f, 56.f};
-  gScene.draw(target, 11, true);
   TemplateAnchor anchor;
-  anchor.configure(TemplateAnchor::Params{});
-  REQUIRE(anchor.capture(gScene.channels.tables(), target));
+  captureOn(target, &anchor);
   CHECK(anchor.match(gScene.channels.tables(), target) == Approx(1.f).margin(1e-4));
 
   // An estimate 8% too small and 2 px off: repeated corrections converge on the target.
@@ -112,10 +117,8 @@ TEST_CASE("the template anchor pulls a drifted size and centre back to the init 
 TEST_CASE("the template anchor leaves the estimate alone when the target no longer matches",
           "[core][estimate]") {
   const Box target{50.f, 30.f, 48.f, 56.f};
-  gScene.draw(target, 11, true);
   TemplateAnchor anchor;
-  anchor.configure(TemplateAnchor::Params{});
-  REQUIRE(anchor.capture(gScene.channels.tables(), target));
+  captureOn(target, &anchor);
   // Another texture where the target was (it turned, or something hides it).
   gScene.draw(target, 99, true);
   const Box est{target.x + 3.f, target.y, target.w * 0.9f, target.h * 0.9f};

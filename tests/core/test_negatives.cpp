@@ -12,6 +12,18 @@ uint16_t gDepth[W * H];
 Rgb8 gRgb[W * H];
 IntegralChannels gChannels;  // large: static
 
+// A D x H mm cylinder seen by a Kinect, over the depth in gChannels.
+NegativeSampler::Cylinder cylinder(float diameterMm, float heightMm) {
+  NegativeSampler::Cylinder c;
+  c.channels = &gChannels;
+  c.k = kKinectV1Intrinsics;
+  c.diameterMm = diameterMm;
+  c.heightMm = heightMm;
+  c.imageW = W;
+  c.imageH = H;
+  return c;
+}
+
 bool near(float a, float b) {
   return std::fabs(a - b) < 1e-3f;
 }
@@ -70,13 +82,7 @@ TEST_CASE("2D negatives: near misses and background, none on the estimate", "[co
   CHECK(background == 250);
   CHECK(cornerAnchored > 50);  // not all concentric
   // In 3D (a cylinder given) the scaled near misses stay concentric.
-  NegativeSampler::Cylinder cyl;
-  cyl.channels = &gChannels;
-  cyl.k = kKinectV1Intrinsics;
-  cyl.diameterMm = 300.f;
-  cyl.heightMm = 500.f;
-  cyl.imageW = W;
-  cyl.imageH = H;
+  const NegativeSampler::Cylinder cyl = cylinder(300.f, 500.f);
   for (int k = 0; k < 40; k += 4) {
     const Box b = s.next(k, est, roi, &cyl, rng);
     CHECK(near(b.x + 0.5f * b.w, est.x + 0.5f * est.w));
@@ -97,13 +103,7 @@ TEST_CASE("3D background negatives take the cylinder's size at the depth where t
   f.depthMm = DepthView{gDepth, W, H, W};
   f.intrinsics = kKinectV1Intrinsics;
   gChannels.compute(f, PixelRect{0, 0, W, H}, true);
-  NegativeSampler::Cylinder cyl;
-  cyl.channels = &gChannels;
-  cyl.k = kKinectV1Intrinsics;
-  cyl.diameterMm = 200.f;
-  cyl.heightMm = 400.f;
-  cyl.imageW = W;
-  cyl.imageH = H;
+  const NegativeSampler::Cylinder cyl = cylinder(200.f, 400.f);
   NegativeSampler s;
   s.configure(NegativeSampler::Params{});
   const Box est{140.f, 90.f, 40.f, 60.f};

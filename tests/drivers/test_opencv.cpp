@@ -466,6 +466,16 @@ TEST_CASE("panned still: bad specs give one line naming the fault", "[opencv][pa
   fails("pan:" + c + "," + c + ",40,30,30,20,100,101,64,48", "c.png: depth must be a 16-bit");
 }
 
+namespace {
+// Frame `name` of the RGB-D folder `dir` replaced by a flat 320x240 colour + depth pair.
+void writeSmallRgbdFrame(const std::string& dir, const char* name) {
+  REQUIRE(
+      cv::imwrite(dir + "/rgb/" + name + ".png", cv::Mat(240, 320, CV_8UC3, cv::Scalar(1, 2, 3))));
+  REQUIRE(
+      cv::imwrite(dir + "/depth/" + name + ".png", cv::Mat(240, 320, CV_16UC1, cv::Scalar(900))));
+}
+}  // namespace
+
 TEST_CASE("image folders: a frame of another size than the first is refused",
           "[opencv][rgbd][otb][bad]") {
   TempDir tmp;
@@ -473,9 +483,7 @@ TEST_CASE("image folders: a frame of another size than the first is refused",
   SECTION("RGB-D folder") {
     const std::string dir = tmp / "seq";
     writeRgbd(dir, "moving", 3);
-    cv::Mat small(240, 320, CV_8UC3, cv::Scalar(1, 2, 3));
-    REQUIRE(cv::imwrite(dir + "/rgb/000001.png", small));
-    REQUIRE(cv::imwrite(dir + "/depth/000001.png", cv::Mat(240, 320, CV_16UC1, cv::Scalar(900))));
+    writeSmallRgbdFrame(dir, "000001");
     RgbdFolderReader reader;
     REQUIRE(reader.open(dir.c_str()));
     REQUIRE(reader.next(*f) == ReadStatus::Ok);
@@ -531,9 +539,7 @@ TEST_CASE("RGB-D folder: intrinsics outside sane bounds or the image are refused
   SECTION("principal point outside the image: refused at the first frame") {
     // 640x480 images: cx 600 would be plausible, but the images here are 320x240.
     test::writeText(dir + "/intrinsics.txt", "259 259 600 120\n");
-    cv::Mat small(240, 320, CV_8UC3, cv::Scalar(1, 2, 3));
-    REQUIRE(cv::imwrite(dir + "/rgb/000000.png", small));
-    REQUIRE(cv::imwrite(dir + "/depth/000000.png", cv::Mat(240, 320, CV_16UC1, cv::Scalar(900))));
+    writeSmallRgbdFrame(dir, "000000");
     RgbdFolderReader reader;
     REQUIRE(reader.open(dir.c_str()));
     CHECK(reader.next(*f) == ReadStatus::Error);
