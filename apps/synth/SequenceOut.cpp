@@ -22,7 +22,8 @@ class Out final : public SequenceOut {
 }  // namespace
 
 std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir, const char* name,
-                                             double fps, char* err, size_t errLen) {
+                                             [[maybe_unused]] double fps, char* err,
+                                             size_t errLen) {
   if (std::strcmp(format, "fakenect") == 0) {
     auto o = std::make_unique<Out<FakenectWriter>>();
     if (!o->writer.open(dir, name)) {
