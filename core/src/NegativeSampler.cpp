@@ -74,8 +74,8 @@ Box NegativeSampler::next(int k, const Box& around, const PixelRect& roi, const 
     }
     if (w > rx1 - rx0) w = rx1 - rx0;
     if (h > ry1 - ry0) h = ry1 - ry0;
-    if (w < kMinSidePx) w = kMinSidePx;
-    if (h < kMinSidePx) h = kMinSidePx;
+    if (w < kMinWindowPx) w = kMinWindowPx;
+    if (h < kMinWindowPx) h = kMinWindowPx;
     b = Box{fmath::clampf(cx - 0.5f * w, rx0, rx1 - w), fmath::clampf(cy - 0.5f * h, ry0, ry1 - h),
             w, h};
     if (overlap(b, around) < maxOverlap) break;

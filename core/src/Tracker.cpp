@@ -3,7 +3,6 @@
 namespace cuetrack {
 
 namespace {
-constexpr float kMinBoxPx = 8.f;    // smallest window side [px]
 constexpr float kRoiMargin = 1.6f;  // ROI: particle boxes + this x mean size per side
 constexpr float kLostSpread = 3.f;  // motion noise gain while lost
 // Re-acquisition while lost: every kSearchEvery-th particle is drawn anew each frame,
@@ -114,8 +113,8 @@ Box Tracker::clampToImage(const Box& b) const {
   const float iw = static_cast<float>(_imageW), ih = static_cast<float>(_imageH);
   if (r.w > iw) r.w = iw;
   if (r.h > ih) r.h = ih;
-  if (r.w < kMinBoxPx) r.w = kMinBoxPx;
-  if (r.h < kMinBoxPx) r.h = kMinBoxPx;
+  if (r.w < kMinWindowPx) r.w = kMinWindowPx;
+  if (r.h < kMinWindowPx) r.h = kMinWindowPx;
   // Keep at least half the window inside the image.
   r.x = fmath::clampf(r.x, -0.5f * r.w, iw - 0.5f * r.w);
   r.y = fmath::clampf(r.y, -0.5f * r.h, ih - 0.5f * r.h);
@@ -285,7 +284,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   const float y1 = fmath::clampf(box.y + box.h, 0.f, static_cast<float>(_imageH));
   if (!(x1 > x0) || !(y1 > y0)) return InitError::BoxOutsideImage;
   const Box b{x0, y0, x1 - x0, y1 - y0};
-  if (b.w < kMinBoxPx || b.h < kMinBoxPx) return InitError::BoxTooSmall;
+  if (b.w < kMinWindowPx || b.h < kMinWindowPx) return InitError::BoxTooSmall;
 
   const bool depthOk = frame.hasDepth() && frame.depthMm.width == frame.rgb.width &&
                        frame.depthMm.height == frame.rgb.height;

@@ -11,6 +11,8 @@ namespace cuetrack {
 inline constexpr int kMaxImageWidth = 640;                           // Kinect v1 colour/depth [px]
 inline constexpr int kMaxImageHeight = 480;                          // [px]
 inline constexpr int kMaxPixels = kMaxImageWidth * kMaxImageHeight;  // 307,200
+// The smallest window side [px]: init boxes, particles and negatives alike.
+inline constexpr float kMinWindowPx = 8.f;
 // Integral images carry one extra zero row and column.
 inline constexpr int kMaxIntegralWidth = kMaxImageWidth + 1;
 inline constexpr int kMaxIntegralHeight = kMaxImageHeight + 1;

@@ -17,7 +17,6 @@ class NegativeSampler {
  public:
   static constexpr float kRange = 1.5f;       // background within +-1.5 window sizes
   static constexpr float kMaxOverlap = 0.3f;  // ... overlapping the estimate less than this
-  static constexpr float kMinSidePx = 8.f;
 
   struct Params {
     float nearOverlap = 0.5f;      // near misses overlap the estimate less than this
