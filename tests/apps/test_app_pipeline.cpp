@@ -244,6 +244,42 @@ TEST_CASE("START, RESET and STOP over the serial link, each answered") {
   CHECK(msgs[0].u.ack.seq == rig.link.stats().sent - 1);
 }
 
+TEST_CASE("a START that a RESET or STOP overtakes before the next frame is answered busy") {
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  static Rig rig(10, false, o);
+  ctp_command_t start = command(CTP_CMD_START, 50);
+  start.box_px[0] = 5;
+  start.box_px[1] = 6;
+  start.box_px[2] = 7;
+  start.box_px[3] = 8;
+  rig.host.send(start);
+  rig.host.send(command(CTP_CMD_RESET, 51));
+  REQUIRE(rig.step() == StepResult::Continue);
+  auto msgs = rig.host.drain();
+  REQUIRE(countType(msgs, CTP_MSG_ERROR) == 1);
+  REQUIRE(countType(msgs, CTP_MSG_ACK) == 1);
+  CHECK(msgs[0].type == CTP_MSG_ERROR);  // the START's answer comes first
+  CHECK(msgs[0].u.error.cmd_type == CTP_CMD_START);
+  CHECK(msgs[0].u.error.cmd_id == 50);
+  CHECK(msgs[0].u.error.code == CTP_E_BUSY);
+  CHECK(msgs[1].type == CTP_MSG_ACK);
+  CHECK(msgs[1].u.ack.cmd_id == 51);
+  CHECK(msgs.back().u.track.state == CTP_STATE_IDLE);  // the START was not applied
+
+  start.id = 60;
+  rig.host.send(start);
+  rig.host.send(command(CTP_CMD_STOP, 61));
+  REQUIRE(rig.step() == StepResult::Stopped);
+  msgs = rig.host.drain();
+  REQUIRE(msgs.size() == 2);
+  CHECK(msgs[0].type == CTP_MSG_ERROR);
+  CHECK(msgs[0].u.error.cmd_id == 60);
+  CHECK(msgs[0].u.error.code == CTP_E_BUSY);
+  CHECK(msgs[1].type == CTP_MSG_ACK);
+  CHECK(msgs[1].u.ack.cmd_id == 61);
+}
+
 TEST_CASE("a START the tracker refuses gets ERROR rejected and leaves the app idle") {
   PipelineOptions o;
   o.useGroundTruth = false;

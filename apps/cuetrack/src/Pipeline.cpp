@@ -25,18 +25,29 @@ bool Pipeline::addSink(platform::TrackSink* sink) {
   return true;
 }
 
-void Pipeline::requestStart(const Box& boxPx, uint16_t cmdId) {
-  // A second START before the next frame replaces the first; the first is still answered.
+// A START waits for the next frame. One that a newer START, a RESET or a STOP supersedes
+// before then is answered ERROR busy: every command gets exactly one reply.
+void Pipeline::dropPendingStart() {
   if (_startPending && _link) _link->sendError(CTP_CMD_START, _startId, CTP_E_BUSY);
+  _startPending = false;
+}
+
+void Pipeline::requestStart(const Box& boxPx, uint16_t cmdId) {
+  dropPendingStart();
   _startPending = true;
   _startBox = boxPx;
   _startId = cmdId;
 }
 
+void Pipeline::requestStop() {
+  dropPendingStart();
+  _stopRequested = true;
+}
+
 void Pipeline::requestReset() {
+  dropPendingStart();
   _tracker.reset();
   _targetActive = false;
-  _startPending = false;
   _autoTargetTried = true;  // a reset target stays reset: no silent re-init from ground truth
   _state = CTP_STATE_IDLE;
 }

@@ -55,7 +55,7 @@ class Pipeline final : public AppControl {
   // AppControl
   void requestStart(const Box& boxPx, uint16_t cmdId) override;
   void requestReset() override;
-  void requestStop() override { _stopRequested = true; }
+  void requestStop() override;
   void setRateHz(uint16_t hz) override;
 
   uint32_t frames() const { return _frames; }
@@ -64,6 +64,7 @@ class Pipeline final : public AppControl {
   const CommandHandler& commands() const { return _commands; }
 
  private:
+  void dropPendingStart();
   // Initialise the tracker from a serial START / from --box or ground truth; true when
   // tracking starts on this frame (*initBox: the box given).
   bool startFromCommand(const Frame& frame, Box* initBox);
