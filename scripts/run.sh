@@ -6,5 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake --preset host >/dev/null
-cmake --build --preset host --target cuetrack
+# Every tool the README's "Everyday use" shows, not the tests (scripts/test.sh builds those).
+cmake --build --preset host --target cuetrack cuetrack-listen cuetrack-record cuetrack-synth \
+  cuetrack-bench cuetrack-convert cuetrack-trackspeed cuetrack-microbench
 exec build/host/bin/cuetrack "$@"

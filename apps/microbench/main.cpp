@@ -93,6 +93,8 @@ void usage() {
       "  Timed mode prints the median and minimum time per frame of each kernel and ISA.\n"
       "  --icount runs one kernel FRAMES times without reading any clock: run it under\n"
       "  qemu with the icount plugin at FRAMES=N and 0; (difference)/N = instructions per frame.\n"
+      "  exit codes: 0 done; 1 a SIMD kernel's result differs from the scalar reference;\n"
+      "  2 bad command line\n"
       "  ISAs in this build:");
   for (const Isa& isa : kIsas) std::fprintf(stderr, " %s", isa.name);
   std::fprintf(stderr, " (active: %s)\n", ig::activeIsa());
