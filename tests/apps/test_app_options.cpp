@@ -77,6 +77,21 @@ TEST_CASE("bad command lines give one line naming the option") {
   CHECK(std::string(usageText()).find("exit codes") != std::string::npos);
 }
 
+TEST_CASE("--source kinect:MODE takes both or colour; depth alone is refused, naming it") {
+  AppOptions o;
+  std::string err;
+  CHECK(parse({"--source", "kinect:colour"}, &o, &err) == ParseResult::Run);
+  CHECK(std::string(o.source) == "kinect:colour");
+  CHECK(parse({"--source", "kinect:both"}, &o, &err) == ParseResult::Run);
+  CHECK(parse({"--source", "kinect"}, &o, &err) == ParseResult::Run);
+  for (const char* bad : {"kinect:depth", "kinect:", "kinect:color2"}) {
+    AppOptions b;
+    CHECK(parse({"--source", bad}, &b, &err) == ParseResult::Error);
+    CHECK(err.find(std::string("--source ") + bad + ":") == 0);
+    CHECK(err.find("needs colour") != std::string::npos);
+  }
+}
+
 TEST_CASE("--box: non-finite and absurd values are refused at parsing, sane ones kept") {
   AppOptions o;
   std::string err;

@@ -78,16 +78,32 @@ kinect_replay_test(kinect_replay_depth_only "[depth-only]" ${_rec}/moving)
 kinect_replay_test(kinect_replay_colour_only "[colour-only]" ${_rec}/moving)
 kinect_replay_test(kinect_replay_misuse "[misuse]" ${_rec}/moving)
 
-# ---- cuetrack-record ---------------------------------------------------------------
-if(NOT TARGET cuetrack-record)
-  return()
-endif()
 set(_expect ${CMAKE_CURRENT_SOURCE_DIR}/run_expect.cmake)
 function(kinect_record_test name run rc)
   list(JOIN run "|" _cmd)
   add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} "-DCMD=${_cmd}" -DEXPECT_RC=${rc} ${ARGN} -P ${_expect})
   set_tests_properties(${name} PROPERTIES LABELS kinect TIMEOUT 300)
 endfunction()
+
+# ---- cuetrack on the live path: both streams (3D, a centre in mm) or colour only (2D) ---
+if(TARGET cuetrack)
+  set(_cuetrack $<TARGET_FILE:cuetrack>)
+  set(_box 291,267,31,52)  # the recording's first ground-truth box
+  kinect_record_test(kinect_cuetrack_both
+                     "${_run_fakenect};${_cuetrack};--source;kinect;--box;${_box};--frames;6" 0
+                     "-DEXPECT_OUT=track seq=5 t=[0-9]+us tracking box=[0-9,]+ mm=-?[0-9]+,")
+  kinect_record_test(kinect_cuetrack_colour_only
+                     "${_run_fakenect};${_cuetrack};--source;kinect:colour;--box;${_box};--frames;6" 0
+                     "-DEXPECT_OUT=track seq=5 t=[0-9]+us tracking box=[0-9,]+ mm=- ")
+  set_tests_properties(kinect_cuetrack_both kinect_cuetrack_colour_only PROPERTIES
+    ENVIRONMENT "FAKENECT_PATH=${_rec}/moving;${_fakenect_env}"
+    FIXTURES_REQUIRED kinect_recordings)
+endif()
+
+# ---- cuetrack-record ---------------------------------------------------------------
+if(NOT TARGET cuetrack-record)
+  return()
+endif()
 set(_record $<TARGET_FILE:cuetrack-record>)
 
 kinect_record_test(kinect_record_help "${_run_plain};${_record};--help" 0

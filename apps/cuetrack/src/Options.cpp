@@ -46,7 +46,10 @@ const char* usageText() {
          "Tracks an object in RGB-D frames and streams the track (docs/serial-protocol.md).\n"
          "\n"
          "source (default: the Kinect when one is plugged in, else the synthetic scene 'moving'):\n"
-         "  --source kinect|synth[:SCENE]|PATH   SCENE: moving twin-crossing occlusion untextured\n"
+         "  --source kinect[:colour]|synth[:SCENE]|PATH\n"
+         "                                       kinect:colour streams colour only (2D\n"
+         "                                       tracking, half the USB load; docs/kinect.md)\n"
+         "                                       SCENE: moving twin-crossing occlusion untextured\n"
          "                                       lighting approach box turn; PATH: a fakenect\n"
          "                                       recording folder (host builds with OpenCV\n"
          "                                       also read RGB-D folders, OTB folders, .avi,\n"
@@ -96,6 +99,15 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       out->quiet = true;
     } else if (std::strcmp(a, "--source") == 0) {
       if (!value(&v)) return ParseResult::Error;
+      // kinect:MODE: the tracker needs colour, so both streams or colour alone.
+      if (std::strncmp(v, "kinect:", 7) == 0 && std::strcmp(v + 7, "colour") != 0 &&
+          std::strcmp(v + 7, "both") != 0) {
+        std::snprintf(err, errLen,
+                      "--source %s: expected kinect, kinect:both or kinect:colour (the tracker "
+                      "needs colour)",
+                      v);
+        return ParseResult::Error;
+      }
       out->source = v;
     } else if (std::strcmp(a, "--box") == 0) {
       if (!value(&v)) return ParseResult::Error;

@@ -36,8 +36,9 @@ KinectSource& kinect() {
   return source;
 }
 
-FrameSource* openKinect(char* err, size_t errLen) {
+FrameSource* openKinect(KinectStreams streams, char* err, size_t errLen) {
   KinectOptions options;
+  options.streams = streams;
   if (!kinect().open(options)) {
     std::snprintf(err, errLen, "%s", kinect().error());
     return nullptr;
@@ -52,13 +53,15 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   if (spec == nullptr) {
 #if defined(CUETRACK_HAVE_KINECT)
     char why[160] = "";
-    if (countKinects(why, sizeof why) > 0) return openKinect(err, errLen);
+    if (countKinects(why, sizeof why) > 0) return openKinect(KinectStreams::Both, err, errLen);
 #endif
     return openSynth(kDefaultScene, seed, frames, err, errLen);
   }
-  if (std::strcmp(spec, "kinect") == 0) {
+  if (std::strcmp(spec, "kinect") == 0 || std::strncmp(spec, "kinect:", 7) == 0) {
 #if defined(CUETRACK_HAVE_KINECT)
-    return openKinect(err, errLen);
+    // Options accepted only kinect, kinect:both and kinect:colour.
+    const bool colourOnly = std::strcmp(spec, "kinect:colour") == 0;
+    return openKinect(colourOnly ? KinectStreams::ColourOnly : KinectStreams::Both, err, errLen);
 #else
     std::snprintf(err, errLen, "kinect: this build has no Kinect driver (libfreenect missing)");
     return nullptr;
@@ -79,7 +82,7 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
 }
 
 void describeGroundTruth(const char* spec, char* out, size_t outLen) {
-  if (!spec || std::strcmp(spec, "kinect") == 0 || std::strncmp(spec, "synth", 5) == 0 ||
+  if (!spec || std::strncmp(spec, "kinect", 6) == 0 || std::strncmp(spec, "synth", 5) == 0 ||
       std::strncmp(spec, "pan:", 4) == 0) {
     std::snprintf(out, outLen, "%s ground truth", spec ? spec : kDefaultScene);
     return;
