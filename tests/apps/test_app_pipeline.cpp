@@ -130,6 +130,15 @@ ctp_command_t command(uint8_t type, uint16_t id) {
   return c;
 }
 
+ctp_command_t startCommand(uint16_t id, int16_t x, int16_t y, int16_t w, int16_t h) {
+  ctp_command_t c = command(CTP_CMD_START, id);
+  c.box_px[0] = x;
+  c.box_px[1] = y;
+  c.box_px[2] = w;
+  c.box_px[3] = h;
+  return c;
+}
+
 int countType(const std::vector<ctp_message_t>& ms, uint8_t type) {
   int n = 0;
   for (const auto& m : ms) n += m.type == type;
@@ -206,11 +215,7 @@ TEST_CASE("START, RESET and STOP over the serial link, each answered") {
   REQUIRE(rig.step() == StepResult::Continue);
   CHECK(rig.sink.at(0).state == CTP_STATE_IDLE);  // no target until told
 
-  ctp_command_t start = command(CTP_CMD_START, 41);
-  start.box_px[0] = 5;
-  start.box_px[1] = 6;
-  start.box_px[2] = 7;
-  start.box_px[3] = 8;
+  ctp_command_t start = startCommand(41, 5, 6, 7, 8);
   rig.host.send(start);
   REQUIRE(rig.step() == StepResult::Continue);
   auto msgs = rig.host.drain();
@@ -248,11 +253,7 @@ TEST_CASE("a START that a RESET or STOP overtakes before the next frame is answe
   PipelineOptions o;
   o.useGroundTruth = false;
   static Rig rig(10, false, o);
-  ctp_command_t start = command(CTP_CMD_START, 50);
-  start.box_px[0] = 5;
-  start.box_px[1] = 6;
-  start.box_px[2] = 7;
-  start.box_px[3] = 8;
+  ctp_command_t start = startCommand(50, 5, 6, 7, 8);
   rig.host.send(start);
   rig.host.send(command(CTP_CMD_RESET, 51));
   REQUIRE(rig.step() == StepResult::Continue);
@@ -284,10 +285,7 @@ TEST_CASE("a START the tracker refuses gets ERROR rejected and leaves the app id
   PipelineOptions o;
   o.useGroundTruth = false;
   static Rig rig(10, false, o);
-  ctp_command_t start = command(CTP_CMD_START, 9);
-  start.box_px[0] = -3;
-  start.box_px[2] = 4;
-  start.box_px[3] = 4;
+  ctp_command_t start = startCommand(9, -3, 0, 4, 4);
   rig.host.send(start);
   REQUIRE(rig.step() == StepResult::Continue);
   const auto msgs = rig.host.drain();
@@ -505,10 +503,7 @@ TEST_CASE("frames may change size while no target is tracked; a START takes the 
   static Rig rig(6, true, o);
   rig.source.resizeFrom(2, 32, 24);
   for (int i = 0; i < 3; ++i) REQUIRE(rig.step() == StepResult::Continue);
-  ctp_command_t start = command(CTP_CMD_START, 3);
-  start.box_px[0] = 2;
-  start.box_px[2] = 8;
-  start.box_px[3] = 8;
+  ctp_command_t start = startCommand(3, 2, 0, 8, 8);
   rig.host.send(start);
   for (int i = 0; i < 3; ++i) REQUIRE(rig.step() == StepResult::Continue);
   CHECK(rig.sink.at(5).state == CTP_STATE_TRACKING);
