@@ -17,7 +17,8 @@ Tracker& sharedTracker() {
 // Ablations of the beyond-the-paper switches: "<preset>-<switch off>", e.g.
 // best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
 // best-noanchor (no 2D scale anchor), best-nomodeguard (the weighted mean even when the
-// cloud has split), best-norefine (search windows not hill-climbed while lost).
+// cloud has split), best-norefine (search windows not hill-climbed while lost),
+// best-nofastmotion (2D: no jumping particles, no coasting over dropped frames).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
     const char* suffix;
@@ -27,7 +28,8 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
                               {"-fixedsize", &TrackerConfig::adaptCylinderSize},
                               {"-noanchor", &TrackerConfig::scaleAnchor2d},
                               {"-nomodeguard", &TrackerConfig::modeGuard},
-                              {"-norefine", &TrackerConfig::refineSearch}};
+                              {"-norefine", &TrackerConfig::refineSearch},
+                              {"-nofastmotion", &TrackerConfig::fastMotion2d}};
   for (const Off& o : kOffs) {
     const std::string suffix(o.suffix);
     if (name.size() <= suffix.size() ||

@@ -54,11 +54,15 @@ const char* usage() {
          "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best, or a\n"
          "                     preset with a beyond-the-paper switch off: best-nolost,\n"
          "                     best-fixedsize, best-noanchor, best-nomodeguard,\n"
-         "                     best-norefine (repeatable; default best)\n"
+         "                     best-norefine, best-nofastmotion (repeatable; default best)\n"
          "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
          "  --peer-runs N      runs for the OpenCV peers (default: --runs)\n"
          "  --seed S           first seed (default 1)\n"
          "  --frames N         use only the first N frames of each sequence\n"
+         "  --stride K         a K times slower camera: track every K-th frame after the\n"
+         "                     first box (the others are neither tracked nor scored)\n"
+         "  --drop-frames PCT  a lossy link: drop PCT percent of the frames at random\n"
+         "                     (the same ones for every tracker and run, from --seed)\n"
          "  --skip-bad-frames  let readers skip unreadable frames (counted) instead of failing\n"
          "  --rgb-only         drop the depth of every sequence (best then runs 2D; 2.x fail)\n"
          "  --max-mem MIB      memory for one decoded sequence (default 4096)\n"
@@ -126,7 +130,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
         if (!isCuetrackConfig(c)) {
           *err = "--config: unknown configuration '" + c +
                  "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
-                 "best-noanchor, best-nomodeguard, best-norefine)";
+                 "best-noanchor, best-nomodeguard, best-norefine, best-nofastmotion)";
           return false;
         }
         configs.push_back(c);
@@ -141,6 +145,19 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       if (a == "--peer-runs") o->peerRuns = static_cast<int>(n);
       if (a == "--frames") o->maxFrames = static_cast<int>(n);
       if (a == "--max-mem") o->maxMemMiB = static_cast<size_t>(n);
+    } else if (a == "--stride" || a == "--drop-frames") {
+      if (!value(&v)) return false;
+      const bool stride = a == "--stride";
+      if (!parseCount(v, stride ? 1 : 0, stride ? 1000 : 95, &n)) {
+        *err = a + ": '" + v +
+               (stride ? "' is not a whole number from 1 to 1000"
+                       : "' is not a whole percentage from 0 to 95");
+        return false;
+      }
+      if (stride)
+        o->stride = static_cast<int>(n);
+      else
+        o->dropPct = static_cast<int>(n);
     } else if (a == "--seed") {
       if (!value(&v)) return false;
       errno = 0;

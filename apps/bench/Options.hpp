@@ -22,6 +22,8 @@ struct Options {
   int peerRuns = -1;  // -1: same as runs
   uint64_t seed = 1;
   int maxFrames = 0;  // 0: whole sequences
+  int stride = 1;     // --stride: every stride-th frame after the first box
+  int dropPct = 0;    // --drop-frames: of those, this percent dropped at random
   size_t maxMemMiB = 4096;
   bool skipBadFrames = false;
   bool rgbOnly = false;  // drop the depth of every sequence (tests the trackers' RGB-only mode)

@@ -124,6 +124,35 @@ void Progress::print(bool endOfRun) {
   if (_tty && endOfRun && _done >= _planned) std::fprintf(stderr, "\n");
 }
 
+void thinSequence(Sequence* seq, int stride, int dropPct, uint64_t seed) {
+  if (stride <= 1 && dropPct <= 0) return;
+  size_t initAt = seq->frames.size();
+  for (size_t i = 0; i < seq->frames.size(); ++i)
+    if (seq->frames[i].hasGroundTruth && !seq->frames[i].groundTruth.empty()) {
+      initAt = i;
+      break;
+    }
+  if (initAt == seq->frames.size()) return;  // runEntry reports it
+  std::vector<CachedFrame> kept;
+  kept.reserve(seq->frames.size());
+  for (size_t i = 0; i < seq->frames.size(); ++i) {
+    bool keep = i <= initAt;
+    if (!keep && (i - initAt) % static_cast<size_t>(stride < 1 ? 1 : stride) == 0) {
+      // splitmix64 of (seed, frame index): a fair draw per frame, reproducible.
+      uint64_t h = seed * 0x9E3779B97F4A7C15ull + static_cast<uint64_t>(seq->frames[i].index);
+      h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+      h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+      h ^= h >> 31;
+      keep = static_cast<int>(h % 100) >= dropPct;
+    }
+    if (keep)
+      kept.push_back(std::move(seq->frames[i]));
+    else
+      ++seq->droppedFrames;
+  }
+  seq->frames = std::move(kept);
+}
+
 SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const TrackerFactory& factory,
                         const RunOptions& options, Progress& progress) {
   SequenceResult result;

@@ -42,6 +42,7 @@ struct Sequence {
   std::string gtHeader;  // first line of the ground-truth file, for BoBoT result files
   std::vector<CachedFrame> frames;
   int skippedFrames = 0;
+  int droppedFrames = 0;  // by thinSequence
   size_t bytes = 0;
 };
 
@@ -49,6 +50,13 @@ struct Sequence {
 // source fails or the frames would exceed `maxBytes` of memory.
 bool loadSequence(FrameSource& source, int maxFrames, size_t maxBytes, Sequence* seq,
                   std::string* err);
+
+// A slower or lossier camera, from the same recording: after the first ground-truth frame
+// (where trackers start) keeps every stride-th frame, and of those drops dropPct percent
+// at random (the same frames for every tracker and run: a hash of seed and frame index).
+// The kept frames keep their timestamps, so a tracker sees the gaps; dropped frames are
+// neither tracked nor scored.
+void thinSequence(Sequence* seq, int stride, int dropPct, uint64_t seed);
 
 // One tracker as the runner sees it.
 class BenchTracker {

@@ -106,6 +106,10 @@ int main(int argc, char** argv) {
                    seq.skippedFrames);
     if (options.rgbOnly)
       for (CachedFrame& f : seq.frames) f.depthMm.clear();
+    thinSequence(&seq, options.stride, options.dropPct, options.seed);
+    if (seq.droppedFrames > 0)
+      std::fprintf(stderr, "cuetrack-bench: %s: %d frames left out (--stride / --drop-frames)\n",
+                   seq.name.c_str(), seq.droppedFrames);
     seq.gtHeader = bobotHeader(arg);
 
     long planned = 0;

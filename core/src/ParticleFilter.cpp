@@ -2,16 +2,49 @@
 
 namespace cuetrack {
 
-void MotionModel2d::predict(Particle& q, Rng& rng, float spread) const {
+void MotionModel2d::predict(Particle& q, Rng& rng, float spread, int framesElapsed) const {
   const float side = fmath::sqrtf(q.size[0] * q.size[1]);
+  const float frames = static_cast<float>(framesElapsed);
   for (int a = 0; a < 2; ++a) {
     q.v[a] = velocityDecay * q.v[a] + spread * velocityNoise * side * rng.gaussianFast();
-    q.p[a] += q.v[a] + spread * positionNoise * side * rng.gaussianFast();
+    q.p[a] += frames * q.v[a] + spread * positionNoise * side * rng.gaussianFast();
   }
   const float ls = scaleNoise * rng.gaussianFast();
   const float la = aspectNoise * rng.gaussianFast();
   q.size[0] *= fmath::fastExp(ls + la);
   q.size[1] *= fmath::fastExp(ls - la);
+}
+
+void MotionModel2d::jump(Particle& q, Rng& rng, float scale) const {
+  const float std = scale * positionNoise * fmath::sqrtf(q.size[0] * q.size[1]);
+  for (int a = 0; a < 2; ++a) {
+    const float d = std * rng.gaussianFast();
+    q.p[a] += d;
+    q.v[a] += d;
+  }
+}
+
+int FramePeriod::framesElapsed(uint64_t dtUs) {
+  int frames = 1;
+  if (_count > 0) {
+    // Median of the history (insertion sort of at most kHistory values).
+    uint64_t sorted[kHistory];
+    for (int i = 0; i < _count; ++i) {
+      uint64_t x = _dtUs[i];
+      int j = i;
+      for (; j > 0 && sorted[j - 1] > x; --j) sorted[j] = sorted[j - 1];
+      sorted[j] = x;
+    }
+    const uint64_t periodUs = sorted[_count / 2];
+    if (periodUs > 0) {
+      const uint64_t n = (dtUs + periodUs / 2) / periodUs;
+      frames = n < 1 ? 1 : n > static_cast<uint64_t>(kMaxGap) ? kMaxGap : static_cast<int>(n);
+    }
+  }
+  _dtUs[_next] = dtUs;
+  _next = (_next + 1) % kHistory;
+  if (_count < kHistory) ++_count;
+  return frames;
 }
 
 void MotionModel3d::predict(Particle& q, Rng& rng, float dtS, float spread) const {

@@ -81,6 +81,7 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
     _config.numTrainingExamples = kMaxTrainingExamples;
   if (_config.numTrainingExamples < 8) _config.numTrainingExamples = 8;
   if (!_config.useGray && !_config.useColour && !_config.useDepth) _config.useGray = true;
+  if (_config.jumpEvery2d < 2) _config.jumpEvery2d = 2;  // particle 0 never jumps
   _seed = seed;
   _clock = clock;
   _gate.minConfidence = _config.learnConfidence;
@@ -374,6 +375,8 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _filter.setSize(_config.numParticles);
   _filter.fill(q);
   _lastTimeUs = frame.timeUs;
+  _period.clear();
+  _jumpArmed = _config.fastMotion2d && !_is3d;
   _state = TrackState::Tracking;
   return InitError::None;
 }
@@ -389,7 +392,7 @@ void Tracker::learn(const Box& estimate, const PixelRect& roi) {
                 _config.anchorWeight, _config.boostRefreshRounds);
 }
 
-PixelRect Tracker::predict(float dtS, bool wasLost) {
+PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
   const float spread = wasLost ? kLostSpread : 1.f;
   const int n = _filter.size();
   PixelRect roi{};
@@ -401,7 +404,10 @@ PixelRect Tracker::predict(float dtS, bool wasLost) {
       _motion3d.predict(q, _rng, dtS, spread);
       keepInView(q, _k, _imageW, _imageH);
     } else {
-      _motion2d.predict(q, _rng, spread);
+      _motion2d.predict(q, _rng, spread, framesElapsed);
+      // Only while the tracker is sure of the target: jumps during an occlusion would
+      // carry the cloud off to whatever looks most like it.
+      if (_jumpArmed && i % _config.jumpEvery2d == 1) _motion2d.jump(q, _rng, _config.jumpScale2d);
       // Keep windows sane and near the image.
       const Box c = clampToImage(particleBox(q));
       q.p[0] = c.x + 0.5f * c.w;
@@ -549,12 +555,15 @@ TrackResult Tracker::update(const Frame& frame) {
   if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
   const uint64_t t0 = now();
   const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
+  const int framesElapsed = _config.fastMotion2d && !_is3d && frame.timeUs > _lastTimeUs
+                                ? _period.framesElapsed(frame.timeUs - _lastTimeUs)
+                                : 1;
   _lastTimeUs = frame.timeUs;
   const bool wasLost = _state == TrackState::Lost;
   if (wasLost) ++_lostFrames;
 
   // Predict, and tabulate the region the particles (and negatives around them) can touch.
-  const PixelRect roi = predict(dtS, wasLost);
+  const PixelRect roi = predict(dtS, framesElapsed, wasLost);
   _channels.compute(frame, roi, _depthFeatures || _is3d);
   const uint64_t t1 = now();
 
@@ -572,6 +581,7 @@ TrackResult Tracker::update(const Frame& frame) {
   Estimate e = estimate(wasLost);
   const uint64_t t3 = now();
   const bool learned = decide(frame, e, wasLost, roi);
+  _jumpArmed = _config.fastMotion2d && !_is3d && learned;
   const uint64_t t4 = now();
 
   _filter.resample(_rng);

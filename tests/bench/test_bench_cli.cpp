@@ -68,6 +68,13 @@ TEST_CASE("a bad command line exits 2 with one clear line pointing to --help") {
   r = runBench("--config best-nothing synth:moving");
   CHECK(r.exitCode == 2);
   CHECK(r.out.find("unknown configuration 'best-nothing'") != std::string::npos);
+  r = runBench("--stride 0 synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("--stride: '0' is not a whole number from 1 to 1000") != std::string::npos);
+  r = runBench("--drop-frames 99 synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("--drop-frames: '99' is not a whole percentage from 0 to 95") !=
+        std::string::npos);
   r = runBench("");
   CHECK(r.exitCode == 2);
   CHECK(r.out.find("no sequence given") != std::string::npos);
@@ -102,11 +109,14 @@ TEST_CASE("a missing sequence is reported, the next one runs, the exit code says
 
 #if CUETRACK_BENCH_TEST_SYNTH
 TEST_CASE("ablations of best (a beyond-the-paper switch off) run as configurations") {
-  const Run r =
-      runBench("synth:moving --frames 6 --runs 1 --quiet --config best-nolost,best-fixedsize");
+  Run r = runBench("synth:moving --frames 6 --runs 1 --quiet --config best-nolost,best-fixedsize");
   CHECK(r.exitCode == 0);
   CHECK(r.out.find("best-nolost") != std::string::npos);
   CHECK(r.out.find("best-fixeds") != std::string::npos);
+  r = runBench("synth:moving --frames 9 --runs 1 --quiet --stride 2 --config best-nofastmotion");
+  CHECK(r.exitCode == 0);
+  CHECK(r.out.find("best-nofastm") != std::string::npos);
+  CHECK(r.out.find("4 frames left out") != std::string::npos);
 }
 
 TEST_CASE("--rgb-only drops depth: best falls back to 2D, 2.1 cannot start (a finding)") {

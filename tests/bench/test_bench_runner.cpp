@@ -150,6 +150,37 @@ TEST_CASE("protocol: init at the first box, later frames scored, runs get consec
   CHECK(r.meanOverlap.front() == Approx(1.0 / 3.0));
 }
 
+TEST_CASE("thinning: every K-th frame after the first box, random drops the same for all") {
+  MovingSquareSource src(21, -1);
+  Sequence strided = load(src);
+  thinSequence(&strided, 3, 0, 1);
+  std::vector<int> kept;
+  for (const CachedFrame& f : strided.frames) kept.push_back(f.index);
+  CHECK(kept == std::vector<int>{0, 3, 6, 9, 12, 15, 18});
+  CHECK(strided.droppedFrames == 14);
+  CHECK(strided.frames[1].timeUs == 3u * 33333u);  // timestamps kept: the tracker sees the gap
+
+  MovingSquareSource a(200, -1), b(200, -1), c(200, -1);
+  Sequence sa = load(a), sb = load(b), sc = load(c);
+  thinSequence(&sa, 1, 30, 7);
+  thinSequence(&sb, 1, 30, 7);
+  thinSequence(&sc, 1, 30, 8);
+  CHECK(sa.frames.front().index == 0);  // the first box's frame always stays
+  CHECK(sa.droppedFrames > 40);         // ~30% of 199
+  CHECK(sa.droppedFrames < 80);
+  CHECK(sa.droppedFrames == sb.droppedFrames);
+  bool same = sa.frames.size() == sc.frames.size();
+  for (size_t i = 0; same && i < sa.frames.size(); ++i)
+    same = sa.frames[i].index == sc.frames[i].index;
+  CHECK_FALSE(same);  // another seed drops other frames
+
+  MovingSquareSource d(9, -1);
+  Sequence untouched = load(d);
+  thinSequence(&untouched, 1, 0, 1);
+  CHECK(untouched.frames.size() == 9);
+  CHECK(untouched.droppedFrames == 0);
+}
+
 TEST_CASE("invisible targets count with overlap 0; no box at all means nothing to start from") {
   MovingSquareSource hidden(5, -1, false);
   const Sequence seq = load(hidden);

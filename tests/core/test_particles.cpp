@@ -59,6 +59,63 @@ TEST_CASE("2D motion: unbiased position noise proportional to window size", "[co
   REQUIRE(ls / n == Approx(0.0).margin(0.002));  // no scale drift
 }
 
+TEST_CASE("2D motion: over dropped frames a particle coasts on its velocity", "[core][motion]") {
+  MotionModel2d m;
+  m.positionNoise = m.velocityNoise = m.scaleNoise = m.aspectNoise = 0.f;
+  for (int frames = 1; frames <= 3; ++frames) {
+    Rng rng(1);
+    Particle q;
+    q.p[0] = 100.f;
+    q.v[0] = 4.f;  // px per frame
+    q.size[0] = q.size[1] = 50.f;
+    m.predict(q, rng, 1.f, frames);
+    REQUIRE(q.v[0] == Approx(4.f * m.velocityDecay));  // decayed once: per given frame
+    REQUIRE(q.p[0] == Approx(100.f + static_cast<float>(frames) * q.v[0]));
+  }
+}
+
+TEST_CASE("2D jump: the displacement becomes velocity, spread as scale x noise", "[core][motion]") {
+  MotionModel2d m;
+  Rng rng(5);
+  const int n = 40000;
+  double s2 = 0;
+  for (int i = 0; i < n; ++i) {
+    Particle q;
+    q.p[0] = 100.f;
+    q.p[1] = 80.f;
+    q.v[0] = 2.f;
+    q.size[0] = 40.f;
+    q.size[1] = 90.f;  // side sqrt(40 x 90) = 60
+    m.jump(q, rng, 3.f);
+    REQUIRE(q.v[0] - 2.f == Approx(q.p[0] - 100.f).margin(1e-4));
+    REQUIRE(q.v[1] == Approx(q.p[1] - 80.f).margin(1e-4));
+    REQUIRE(q.size[0] == 40.f);
+    s2 += (q.p[0] - 100.0) * (q.p[0] - 100.0);
+  }
+  const double sd = 3.0 * m.positionNoise * 60.0;
+  REQUIRE(s2 / n == Approx(sd * sd).epsilon(0.04));
+}
+
+TEST_CASE("frame period: a steady stream is one frame a step, a gap counts its frames",
+          "[core][motion]") {
+  FramePeriod p;
+  // 30 fps with +-1 ms jitter, then one and two dropped frames, then a long stall.
+  REQUIRE(p.framesElapsed(33000) == 1);  // no history yet
+  for (int i = 0; i < 12; ++i) REQUIRE(p.framesElapsed(i % 2 ? 34000 : 32500) == 1);
+  REQUIRE(p.framesElapsed(66700) == 2);
+  REQUIRE(p.framesElapsed(33300) == 1);
+  REQUIRE(p.framesElapsed(100000) == 3);
+  REQUIRE(p.framesElapsed(900000) == FramePeriod::kMaxGap);
+  // The median ignores isolated gaps: a stream at any rate is 1 a step.
+  FramePeriod slow;
+  for (int i = 0; i < 20; ++i)
+    REQUIRE(slow.framesElapsed(i % 5 == 4 ? 200000 : 100000) == (i % 5 == 4 && i > 0 ? 2 : 1));
+  // clear() forgets the old rate.
+  slow.clear();
+  REQUIRE(slow.framesElapsed(33000) == 1);
+  REQUIRE(slow.framesElapsed(33000) == 1);
+}
+
 namespace {
 constexpr int W = 160, H = 120;
 uint16_t depth[W * H];

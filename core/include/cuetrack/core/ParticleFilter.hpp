@@ -31,7 +31,27 @@ struct MotionModel2d {
   float velocityDecay = 0.9f;  // du' = decay du + noise: keeps velocities bounded
   float scaleNoise = 0.025f;   // std of ln(scale) per frame
   float aspectNoise = 0.01f;   // std of ln(w/h) per frame
-  void predict(Particle& q, Rng& rng, float spread) const;
+  // framesElapsed > 1 when frames were dropped: the velocity is per frame, so the
+  // particle coasts that many frames (the noise stays one frame's: see FramePeriod).
+  void predict(Particle& q, Rng& rng, float spread, int framesElapsed = 1) const;
+  // A jump of scale x the position noise, taken into the velocity as well, so that a
+  // particle that lands on a fast target keeps moving with it (TrackerConfig::fastMotion2d).
+  void jump(Particle& q, Rng& rng, float scale) const;
+};
+
+// The frames elapsed since the last one given to the tracker, from the timestamps: the
+// gap over the median of the last few gaps (the frame period), rounded, in 1..kMaxGap.
+// A steady stream, at any rate, gives 1 every frame; a dropped frame gives 2.
+class FramePeriod {
+ public:
+  static constexpr int kHistory = 9;
+  static constexpr int kMaxGap = 4;
+  void clear() { _count = 0; }
+  int framesElapsed(uint64_t dtUs);
+
+ private:
+  uint64_t _dtUs[kHistory] = {};
+  int _count = 0, _next = 0;
 };
 
 // 3D: the paper's AR(1), r' = r + v dt, v' = v + N(0, sigma^2 dt I), with sigma^2 the

@@ -77,7 +77,8 @@ class Tracker {
     float concentration = 0.f;  // weighted mean overlap of the particles with it
   };
   // update()'s stages, in order.
-  PixelRect predict(float dtS, bool wasLost);      // motion (+ search while lost); the ROI
+  PixelRect predict(float dtS, int framesElapsed,
+                    bool wasLost);                 // motion (+ search while lost); the ROI
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
   Estimate estimate(bool wasLost);                 // weights and the estimate
   // Lost detection, the update gate and learning; true when learnt.
@@ -110,6 +111,8 @@ class Tracker {
   int _imageW = 0, _imageH = 0;
   CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
+  FramePeriod _period{};    // fastMotion2d: frames dropped since the last one
+  bool _jumpArmed = false;  // fastMotion2d: the last frame was learnt, so particles may jump
   Box _lastBox{};
   SizeFilter2d _sizeFilter{};      // 2D: the estimate's size, smoothed
   TemplateAnchor _templateAnchor;  // 2D, scaleAnchor2d: the init box's grey template
