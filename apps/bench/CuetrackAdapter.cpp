@@ -29,7 +29,7 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
                               {"-noanchor", &TrackerConfig::scaleAnchor2d},
                               {"-nomodeguard", &TrackerConfig::modeGuard},
                               {"-norefine", &TrackerConfig::refineSearch},
-                              {"-nofastmotion", &TrackerConfig::fastMotion2d}};
+                              {"-nofastmotion", &TrackerConfig::fastMotion}};
   for (const Off& o : kOffs) {
     const std::string suffix(o.suffix);
     if (name.size() <= suffix.size() ||

@@ -60,6 +60,16 @@ void MotionModel3d::predict(Particle& q, Rng& rng, float dtS, float spread) cons
   }
 }
 
+void MotionModel3d::jump(Particle& q, Rng& rng, float dtS, float scale) const {
+  const float std = scale * positionNoise * q.size[0] * fmath::sqrtf(dtS * 30.f);
+  const float invDt = dtS > 0.f ? 1.f / dtS : 0.f;
+  for (int a = 0; a < 2; ++a) {
+    const float d = std * rng.gaussianFast();
+    q.p[a] += d;
+    q.v[a] += d * invDt;
+  }
+}
+
 Box projectCylinder(const Particle& q, const CameraIntrinsics& k) {
   const float z = q.p[2];
   if (!(z > 50.f)) return Box{};

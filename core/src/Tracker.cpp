@@ -81,7 +81,7 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
     _config.numTrainingExamples = kMaxTrainingExamples;
   if (_config.numTrainingExamples < 8) _config.numTrainingExamples = 8;
   if (!_config.useGray && !_config.useColour && !_config.useDepth) _config.useGray = true;
-  if (_config.jumpEvery2d < 2) _config.jumpEvery2d = 2;  // particle 0 never jumps
+  if (_config.jumpEvery < 2) _config.jumpEvery = 2;  // particle 0 never jumps
   _seed = seed;
   _clock = clock;
   _gate.minConfidence = _config.learnConfidence;
@@ -376,7 +376,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _filter.fill(q);
   _lastTimeUs = frame.timeUs;
   _period.clear();
-  _jumpArmed = _config.fastMotion2d && !_is3d;
+  _jumpArmed = _config.fastMotion;
   _state = TrackState::Tracking;
   return InitError::None;
 }
@@ -394,6 +394,8 @@ void Tracker::learn(const Box& estimate, const PixelRect& roi) {
 
 PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
   const float spread = wasLost ? kLostSpread : 1.f;
+  // 3D at 30 fps the AR(1) model keeps up (jumps there cost accuracy: docs/algorithm.md).
+  _jumping3d = _is3d && _jumpArmed && dtS > _config.jumpMinDtS;
   const int n = _filter.size();
   PixelRect roi{};
   float meanW = 0.f, meanH = 0.f;
@@ -402,12 +404,16 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
     if (wasLost && i % kSearchEvery == 0) q = searchParticle((i / kSearchEvery) % 2 == 0);
     if (_is3d) {
       _motion3d.predict(q, _rng, dtS, spread);
+      if (_jumping3d && i % _config.jumpEvery == 1) {
+        _preJump[i / _config.jumpEvery] = q;
+        _motion3d.jump(q, _rng, dtS, _config.jumpScale);
+      }
       keepInView(q, _k, _imageW, _imageH);
     } else {
       _motion2d.predict(q, _rng, spread, framesElapsed);
       // Only while the tracker is sure of the target: jumps during an occlusion would
       // carry the cloud off to whatever looks most like it.
-      if (_jumpArmed && i % _config.jumpEvery2d == 1) _motion2d.jump(q, _rng, _config.jumpScale2d);
+      if (_jumpArmed && i % _config.jumpEvery == 1) _motion2d.jump(q, _rng, _config.jumpScale);
       // Keep windows sane and near the image.
       const Box c = clampToImage(particleBox(q));
       q.p[0] = c.x + 0.5f * c.w;
@@ -555,7 +561,7 @@ TrackResult Tracker::update(const Frame& frame) {
   if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
   const uint64_t t0 = now();
   const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
-  const int framesElapsed = _config.fastMotion2d && !_is3d && frame.timeUs > _lastTimeUs
+  const int framesElapsed = _config.fastMotion && !_is3d && frame.timeUs > _lastTimeUs
                                 ? _period.framesElapsed(frame.timeUs - _lastTimeUs)
                                 : 1;
   _lastTimeUs = frame.timeUs;
@@ -574,6 +580,19 @@ TrackResult Tracker::update(const Frame& frame) {
       if (correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH))
         _boxes[i] = particleBox(_filter[i]);
     }
+    // A jump that landed on another surface (a twin further back, the background) is
+    // undone: only the sideways search is wanted, not a new depth.
+    for (int i = 1; _jumping3d && i < n; i += _config.jumpEvery) {
+      const Particle& pre = _preJump[i / _config.jumpEvery];
+      const float dz = _filter[i].p[2] - pre.p[2];
+      if (dz <= _config.jumpMaxDepthChange * pre.p[2] &&
+          -dz <= _config.jumpMaxDepthChange * pre.p[2])
+        continue;
+      _filter[i] = pre;
+      keepInView(_filter[i], _k, _imageW, _imageH);
+      correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH);
+      _boxes[i] = particleBox(_filter[i]);
+    }
   }
   const uint64_t t2 = now();
 
@@ -581,7 +600,7 @@ TrackResult Tracker::update(const Frame& frame) {
   Estimate e = estimate(wasLost);
   const uint64_t t3 = now();
   const bool learned = decide(frame, e, wasLost, roi);
-  _jumpArmed = _config.fastMotion2d && !_is3d && learned;
+  _jumpArmed = _config.fastMotion && learned;
   const uint64_t t4 = now();
 
   _filter.resample(_rng);

@@ -96,6 +96,31 @@ TEST_CASE("2D jump: the displacement becomes velocity, spread as scale x noise",
   REQUIRE(s2 / n == Approx(sd * sd).epsilon(0.04));
 }
 
+TEST_CASE("3D jump: sideways only, the displacement over dt becomes velocity", "[core][motion]") {
+  MotionModel3d m;
+  Rng rng(8);
+  const float dt = 0.1f;  // 10 fps
+  const int n = 40000;
+  double s2 = 0;
+  for (int i = 0; i < n; ++i) {
+    Particle q;
+    q.p[0] = 10.f;
+    q.p[2] = 2000.f;
+    q.v[1] = 50.f;
+    q.size[0] = 200.f;
+    q.size[1] = 300.f;
+    m.jump(q, rng, dt, 3.f);
+    REQUIRE(q.p[2] == 2000.f);  // the depth correction sets z
+    REQUIRE(q.v[0] * dt == Approx(q.p[0] - 10.f).margin(1e-3));
+    REQUIRE((q.v[1] - 50.f) * dt == Approx(q.p[1]).margin(1e-3));
+    REQUIRE(q.v[2] == 0.f);
+    s2 += (q.p[0] - 10.0) * (q.p[0] - 10.0);
+  }
+  // 3 x positionNoise x D per sqrt(frame of 1/30 s)
+  const double sd = 3.0 * m.positionNoise * 200.0 * std::sqrt(dt * 30.0);
+  REQUIRE(s2 / n == Approx(sd * sd).epsilon(0.04));
+}
+
 TEST_CASE("frame period: a steady stream is one frame a step, a gap counts its frames",
           "[core][motion]") {
   FramePeriod p;

@@ -104,11 +104,11 @@ TEST_CASE("every preset tracks the synthetic moving target", "[core][e2e]") {
 TEST_CASE("best in 2D keeps a target that moves twice as far per frame", "[core][e2e]") {
   // The moving scene given every other frame, colour only (best falls back to 2D): the
   // target moves up to ~0.3 of its side per frame. The control, best without its
-  // fast-motion particles, loses it in most runs.
+  // fast-motion particles, loses it in about half the runs.
   TrackerConfig control = presetConfig(Preset::Best);
-  control.fastMotion2d = false;
+  control.fastMotion = false;
   const int frames = emulated() ? 30 : 60;
-  const int seeds = emulated() || sanitized() ? 2 : 4;
+  const int seeds = emulated() || sanitized() ? 2 : 8;
   float controlHits = 0.f;
   for (int k = 0; k < seeds; ++k) {
     const uint64_t seed = 1 + static_cast<uint64_t>(k);
@@ -123,7 +123,36 @@ TEST_CASE("best in 2D keeps a target that moves twice as far per frame", "[core]
     controlHits += off.hitRate() / static_cast<float>(seeds);
   }
   INFO("control's mean hit rate " << controlHits);
-  REQUIRE(controlHits <= 0.6f);
+  REQUIRE(controlHits <= 0.7f);
+}
+
+TEST_CASE("best in 3D keeps a target seen at 7.5 fps", "[core][e2e]") {
+  // The moving scene given every fourth frame (7.5 fps, with depth): the AR(1) model
+  // does not reach where the target is next. The control, best without its fast-motion
+  // particles, loses it in about half the runs; at 30 fps the two are the same bit for bit.
+  TrackerConfig control = presetConfig(Preset::Best);
+  control.fastMotion = false;
+  const int stride = 4, frames = 90;
+  const int seeds = emulated() || sanitized() ? 2 : 8;
+  float onHits = 0.f, controlHits = 0.f;
+  for (int k = 0; k < seeds; ++k) {
+    const uint64_t seed = 1 + static_cast<uint64_t>(k);
+    const Stats on =
+        runScene("moving", presetConfig(Preset::Best), seed, frames, 1 << 30, stride, false, 1);
+    const Stats off = runScene("moving", control, seed, frames, 1 << 30, stride, false, 1);
+    INFO("seed " << seed << ": hit rate " << on.hitRate() << " with, " << off.hitRate()
+                 << " without");
+    REQUIRE(on.frames == (frames - 1) / stride);
+    REQUIRE(on.allocations == 0);
+    onHits += on.hitRate() / static_cast<float>(seeds);
+    controlHits += off.hitRate() / static_cast<float>(seeds);
+  }
+  INFO("mean hit rate " << onHits << " with, " << controlHits << " without");
+  REQUIRE(onHits >= 0.9f);
+  REQUIRE(controlHits <= onHits - 0.3f);
+  const Stats a = runScene("moving", presetConfig(Preset::Best), 3, 20, 1 << 30, 1, false, 1);
+  const Stats b = runScene("moving", control, 3, 20, 1 << 30, 1, false, 1);
+  REQUIRE(a.overlapSum == b.overlapSum);
 }
 
 TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2e]") {

@@ -35,7 +35,7 @@ struct MotionModel2d {
   // particle coasts that many frames (the noise stays one frame's: see FramePeriod).
   void predict(Particle& q, Rng& rng, float spread, int framesElapsed = 1) const;
   // A jump of scale x the position noise, taken into the velocity as well, so that a
-  // particle that lands on a fast target keeps moving with it (TrackerConfig::fastMotion2d).
+  // particle that lands on a fast target keeps moving with it (TrackerConfig::fastMotion).
   void jump(Particle& q, Rng& rng, float scale) const;
 };
 
@@ -64,6 +64,9 @@ struct MotionModel3d {
   float positionNoise = 0.12f;
   float sizeNoise = 0.f;  // std of ln(D), ln(H) per frame; 0 = fixed cylinder (paper)
   void predict(Particle& q, Rng& rng, float dtS, float spread) const;
+  // A sideways jump (x, y) of scale x the position noise over dtS, taken into the
+  // velocity as well (TrackerConfig::fastMotion); the depth correction then sets z.
+  void jump(Particle& q, Rng& rng, float dtS, float scale) const;
 };
 
 // The cylinder's projection: an upright cylinder seen by a pinhole camera is a

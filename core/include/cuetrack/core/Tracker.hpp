@@ -111,8 +111,10 @@ class Tracker {
   int _imageW = 0, _imageH = 0;
   CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
-  FramePeriod _period{};    // fastMotion2d: frames dropped since the last one
-  bool _jumpArmed = false;  // fastMotion2d: the last frame was learnt, so particles may jump
+  FramePeriod _period{};    // fastMotion: frames dropped since the last one
+  bool _jumpArmed = false;  // fastMotion: the last frame was learnt, so particles may jump
+  bool _jumping3d = false;  // ... and in 3D they do this frame (frames far enough apart)
+  Particle _preJump[kMaxParticles / 2];  // 3D: each jumping particle before its jump
   Box _lastBox{};
   SizeFilter2d _sizeFilter{};      // 2D: the estimate's size, smoothed
   TemplateAnchor _templateAnchor;  // 2D, scaleAnchor2d: the init box's grey template

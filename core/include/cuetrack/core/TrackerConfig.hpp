@@ -41,9 +41,11 @@ struct TrackerConfig {
   bool scaleAnchor2d = false;      // 2D: size and centre follow the init template's best match
   bool modeGuard = false;     // a split cloud: estimate from the best particle's mode, not the mean
   bool refineSearch = false;  // lostDetection: the best fresh search windows climb to a peak
-  // 2D: fast targets and dropped frames. After a learnt frame every jumpEvery2d-th particle
-  // jumps (MotionModel2d::jump), and a particle coasts on its velocity over dropped frames.
-  bool fastMotion2d = false;
+  // Fast targets and slow or dropped frames. After a learnt frame every jumpEvery-th
+  // particle jumps (MotionModel2d/3d::jump): in 2D always, and a particle coasts on its
+  // velocity over dropped frames; in 3D only when frames come further apart than
+  // jumpMinDtS, and a jump that the depth correction puts on another surface is undone.
+  bool fastMotion = false;
   // fallbackTo2d: when a 3D/depth configuration runs 2D RGB, these replace the 3D values
   // (0 = same as in 3D): the RGB-only classifier needs more weak classifiers (the paper's
   // RGB tests use 32), and partial occlusions in RGB dip the confidence for longer.
@@ -71,8 +73,10 @@ struct TrackerConfig {
   float positionNoise2d = 0.09f;     // 2D motion noise per frame, x sqrt(w h)
   float scaleNoise2d = 0.015f;       // 2D std of ln(scale) per frame
   float aspectNoise2d = 0.004f;      // 2D std of ln(w/h) per frame
-  int jumpEvery2d = 10;              // fastMotion2d: one particle in this many jumps ...
-  float jumpScale2d = 3.f;           // ... by this many times the position noise
+  int jumpEvery = 10;                // fastMotion: one particle in this many jumps ...
+  float jumpScale = 3.f;             // ... by this many times the position noise
+  float jumpMinDtS = 0.045f;         // ... in 3D only with frames further apart (30 fps: none)
+  float jumpMaxDepthChange = 0.15f;  // ... and undone if its depth moved more (a part of z)
   float cylinderSizeNoise = 0.002f;  // adaptCylinderSize: std of ln D and ln H per frame
   float cylinderSizeGain = 0.1f;     // ... per learnt frame, ln D, ln H move this part of the
                                      // way to the silhouette measured in depth (0: walk only)
