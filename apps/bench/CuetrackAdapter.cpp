@@ -18,7 +18,7 @@ Tracker& sharedTracker() {
 // best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
 // best-noanchor (no 2D scale anchor), best-nomodeguard (the weighted mean even when the
 // cloud has split), best-norefine (search windows not hill-climbed while lost),
-// best-nofastmotion (2D: no jumping particles, no coasting over dropped frames).
+// best-nofastmotion (no jumping particles, no coasting over dropped frames).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
     const char* suffix;
