@@ -59,6 +59,8 @@ class CuetrackBench final : public BenchTracker {
 
   Box update(const CachedFrame& f, double* stageUs) override {
     const TrackResult r = sharedTracker().update(f.frame());
+    _hasPosition = r.state == TrackState::Tracking && r.hasPosition3d;
+    for (int a = 0; a < 3; ++a) _positionMm[a] = r.positionMm[a];
     stageUs[0] = r.timesUs.features;
     stageUs[1] = r.timesUs.predict;
     stageUs[2] = r.timesUs.weigh;
@@ -68,9 +70,15 @@ class CuetrackBench final : public BenchTracker {
     return r.state == TrackState::Tracking ? r.box : Box{};
   }
   bool hasStages() const override { return true; }
+  bool lastPositionMm(float out[3]) const override {
+    for (int a = 0; a < 3; ++a) out[a] = _positionMm[a];
+    return _hasPosition;
+  }
 
  private:
   TrackerConfig _config;
+  bool _hasPosition = false;
+  float _positionMm[3] = {0.f, 0.f, 0.f};
   platform::MonotonicClock _clock;
 };
 

@@ -61,6 +61,10 @@ void appendFigures(std::string& out, const Figures& f, bool valid) {
   appendNumber(out, f.pascal, 3, valid);
   out += ", \"center_px\": ";
   appendNumber(out, f.centerPx, 3, valid);
+  out += ", \"center_mm\": ";
+  appendNumber(out, f.centerMm, 1, valid);
+  out += ", \"center_z_mm\": ";
+  appendNumber(out, f.centerZMm, 1, valid);
   out += ", \"ms_median\": ";
   appendNumber(out, f.msMedian, 4, valid);
   out += ", \"ms_mean\": ";

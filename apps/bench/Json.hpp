@@ -1,11 +1,13 @@
 // --json FILE: the stable schema of issue 7, documented in docs/bench-json.md.
 //   {"tracker", "config", "runs",
 //    "sequences": [{"name", "frames", "overlap", "hit", "pascal", "center_px",
-//                   "ms_median", "ms_mean", "allocs"}],
-//    "average": {"frames", "overlap", "hit", "pascal", "center_px", "ms_median",
-//                "ms_mean", "allocs"}}
+//                   "center_mm", "center_z_mm", "ms_median", "ms_mean",
+//                   "allocs"}],
+//    "average": {"frames", "overlap", "hit", "pascal", "center_px", "center_mm",
+//                "center_z_mm", "ms_median", "ms_mean", "allocs"}}
 // One entry: that object; several: an array of them. Percentages are 0-100.
-// A figure that does not exist (tracker could not run, no centre distance) is null.
+// A figure that does not exist (tracker could not run, no centre distance, no 3D truth or
+// no 3D position) is null.
 #pragma once
 
 #include <cstdio>

@@ -41,6 +41,17 @@ void RunAccumulator::add(const Box& groundTruth, const Box& predicted) {
   }
 }
 
+void RunAccumulator::addPosition(const float truthMm[3], const float estimateMm[3]) {
+  double ss = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double d = double(estimateMm[a]) - double(truthMm[a]);
+    ss += d * d;
+  }
+  _centerMmSum += std::sqrt(ss);
+  _centerZMmSum += std::fabs(double(estimateMm[2]) - double(truthMm[2]));
+  ++_centerMmFrames;
+}
+
 void RunAccumulator::addOverlapOnly(double overlapValue) {
   ++_frames;
   _overlapSum += overlapValue;
@@ -59,6 +70,11 @@ RunFigures RunAccumulator::figures() const {
   f.centerFrames = _centerFrames;
   f.centerPx =
       _centerFrames > 0 ? _centerSum / _centerFrames : std::numeric_limits<double>::quiet_NaN();
+  f.centerMmFrames = _centerMmFrames;
+  f.centerMm = _centerMmFrames > 0 ? _centerMmSum / _centerMmFrames
+                                   : std::numeric_limits<double>::quiet_NaN();
+  f.centerZMm = _centerMmFrames > 0 ? _centerZMmSum / _centerMmFrames
+                                    : std::numeric_limits<double>::quiet_NaN();
   return f;
 }
 
@@ -76,10 +92,10 @@ double median(std::vector<double> values) {
 Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<double>& frameTimesUs,
                       const std::vector<double>& allocsPerRun) {
   Figures f;
-  f.centerPx = std::numeric_limits<double>::quiet_NaN();
+  f.centerPx = f.centerMm = f.centerZMm = std::numeric_limits<double>::quiet_NaN();
   if (runs.empty()) return f;
-  double centerSum = 0.0;
-  int centerRuns = 0;
+  double centerSum = 0.0, centerMmSum = 0.0, centerZMmSum = 0.0;
+  int centerRuns = 0, centerMmRuns = 0;
   for (const RunFigures& r : runs) {
     f.overlap += r.overlapPct;
     f.hit += r.hitPct;
@@ -88,6 +104,11 @@ Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<dou
       centerSum += r.centerPx;
       ++centerRuns;
     }
+    if (r.centerMmFrames > 0) {
+      centerMmSum += r.centerMm;
+      centerZMmSum += r.centerZMm;
+      ++centerMmRuns;
+    }
   }
   const double n = static_cast<double>(runs.size());
   f.frames = runs.front().frames;
@@ -95,6 +116,10 @@ Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<dou
   f.hit /= n;
   f.pascal /= n;
   if (centerRuns > 0) f.centerPx = centerSum / centerRuns;
+  if (centerMmRuns > 0) {
+    f.centerMm = centerMmSum / centerMmRuns;
+    f.centerZMm = centerZMmSum / centerMmRuns;
+  }
   if (!frameTimesUs.empty()) {
     double sum = 0.0;
     for (double t : frameTimesUs) sum += t;
@@ -111,10 +136,10 @@ Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<dou
 
 Figures averageFigures(const std::vector<Figures>& sequences) {
   Figures a;
-  a.centerPx = std::numeric_limits<double>::quiet_NaN();
+  a.centerPx = a.centerMm = a.centerZMm = std::numeric_limits<double>::quiet_NaN();
   if (sequences.empty()) return a;
-  double centerSum = 0.0;
-  int centerSeqs = 0;
+  double centerSum = 0.0, centerMmSum = 0.0, centerZMmSum = 0.0;
+  int centerSeqs = 0, centerMmSeqs = 0;
   bool allStages = true;
   for (const Figures& s : sequences) {
     a.frames += s.frames;
@@ -130,6 +155,11 @@ Figures averageFigures(const std::vector<Figures>& sequences) {
       centerSum += s.centerPx;
       ++centerSeqs;
     }
+    if (!std::isnan(s.centerMm)) {
+      centerMmSum += s.centerMm;
+      centerZMmSum += s.centerZMm;
+      ++centerMmSeqs;
+    }
   }
   const double n = static_cast<double>(sequences.size());
   a.overlap /= n;
@@ -141,6 +171,10 @@ Figures averageFigures(const std::vector<Figures>& sequences) {
   for (double& s : a.stageMs) s /= n;
   a.hasStages = allStages;
   if (centerSeqs > 0) a.centerPx = centerSum / centerSeqs;
+  if (centerMmSeqs > 0) {
+    a.centerMm = centerMmSum / centerMmSeqs;
+    a.centerZMm = centerZMmSum / centerMmSeqs;
+  }
   return a;
 }
 

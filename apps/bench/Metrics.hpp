@@ -9,8 +9,12 @@
 //   centre distance [px] between box centres, only where BOTH boxes are non-empty:
 //              a frame where either is empty has no defined distance, so it is left
 //              out of the mean (it already scores 0 in overlap, hit and pascal).
+//   3D centre error [mm]: |true centre - reported 3D centre|, on sources that know the
+//              target's 3D centre (synthetic scenes), only where the target is visible
+//              and the tracker reported a 3D position (3D presets while tracking).
 // Per run: mean overlap, hit rate and pascal score in percent (0-100), mean centre
-// distance over the frames that have one (NaN when there is none).
+// distance over the frames that have one, mean 3D centre error likewise (NaN when there
+// is none).
 // Over runs (seeds): plain means of the per-run figures (runs without a centre
 // distance are skipped); times pool every frame of every run.
 #pragma once
@@ -40,14 +44,19 @@ struct RunFigures {
   double overlapPct = 0.0;  // mean overlap x 100
   double hitPct = 0.0;
   double pascalPct = 0.0;
-  double centerPx = 0.0;  // NaN when no frame had both boxes
-  int centerFrames = 0;   // frames that entered centerPx
+  double centerPx = 0.0;   // NaN when no frame had both boxes
+  int centerFrames = 0;    // frames that entered centerPx
+  double centerMm = 0.0;   // NaN when no frame had a 3D position and 3D truth
+  double centerZMm = 0.0;  // mean |z error| over the same frames
+  int centerMmFrames = 0;
 };
 
 class RunAccumulator {
  public:
   void add(const Box& groundTruth, const Box& predicted);
   void addOverlapOnly(double overlap);  // for callers that evaluated the frame already
+  // A frame's 3D centre: truth and estimate [mm], camera coordinates.
+  void addPosition(const float truthMm[3], const float estimateMm[3]);
   RunFigures figures() const;
   int frames() const { return _frames; }
 
@@ -58,6 +67,8 @@ class RunAccumulator {
   int _pascals = 0;
   double _centerSum = 0.0;
   int _centerFrames = 0;
+  double _centerMmSum = 0.0, _centerZMmSum = 0.0;
+  int _centerMmFrames = 0;
 };
 
 // The figures the JSON schema and the tables carry, for one sequence or an average.
@@ -67,6 +78,8 @@ struct Figures {
   double hit = 0.0;         // [%]
   double pascal = 0.0;      // [%]
   double centerPx = 0.0;    // [px], NaN = undefined
+  double centerMm = 0.0;    // 3D centre error [mm], NaN = undefined (no 3D truth or position)
+  double centerZMm = 0.0;   // its z part, mean |z error| [mm], NaN likewise
   double msMedian = 0.0;    // tracking time per frame [ms]
   double msMean = 0.0;      // [ms]
   double allocs = 0.0;      // heap allocations while tracking, per run
@@ -78,7 +91,7 @@ struct Figures {
 Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<double>& frameTimesUs,
                       const std::vector<double>& allocsPerRun);
 // Macro average over sequences, as the paper's "Averages" columns: the mean of the
-// per-sequence figures (centre distance over the sequences that have one).
+// per-sequence figures (centre distances over the sequences that have one).
 Figures averageFigures(const std::vector<Figures>& sequences);
 
 double median(std::vector<double> values);  // 0 for none

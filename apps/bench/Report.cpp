@@ -77,6 +77,38 @@ void textAccuracyTable(std::string& out, const std::vector<EntryResult>& entries
   }
 }
 
+// Whether any entry placed the target in 3D on a sequence that knows its 3D centre.
+bool anyCenterMm(const std::vector<EntryResult>& entries) {
+  for (const EntryResult& e : entries)
+    for (const SequenceResult& s : e.sequences)
+      if (s.ran && !std::isnan(s.figures.centerMm)) return true;
+  return false;
+}
+
+// Per sequence the 3D centre error and its depth part [mm], then the averages; n/a for a
+// tracker that reports no 3D position.
+void textCenterMmTable(std::string& out, const std::vector<EntryResult>& entries) {
+  const auto& seqs = entries.front().sequences;
+  appendf(out, "%-22s", "");
+  for (const SequenceResult& s : seqs) appendf(out, " %-15s", fit(s.name, 15).c_str());
+  appendf(out, " %-15s\n%-22s", "Averages", "tracker");
+  for (size_t i = 0; i <= seqs.size(); ++i) appendf(out, " %7s %7s", "3D", "z");
+  out += "\n";
+  for (const EntryResult& e : entries) {
+    appendf(out, "%-22s", fit(e.label(), 22).c_str());
+    for (const SequenceResult& s : e.sequences) {
+      if (!s.ran) {
+        appendf(out, " %15s", notRunCell(s));
+        continue;
+      }
+      appendf(out, " %7s %7s", num(s.figures.centerMm, 1).c_str(),
+              num(s.figures.centerZMm, 1).c_str());
+    }
+    const Figures a = e.average();
+    appendf(out, " %7s %7s\n", num(a.centerMm, 1).c_str(), num(a.centerZMm, 1).c_str());
+  }
+}
+
 // Failed sequences once each, then every tracker that could not run, with the reason.
 std::string notRunList(const std::vector<EntryResult>& entries, const char* bullet) {
   std::string out;
@@ -114,6 +146,12 @@ std::string textReport(const std::vector<EntryResult>& entries) {
   textAccuracyTable(out, entries, true);
   out += "\nPASCAL score [%] and mean centre distance [px] (the paper's Table 2 layout)\n";
   textAccuracyTable(out, entries, false);
+  if (anyCenterMm(entries)) {
+    out +=
+        "\n3D centre error and its depth part [mm], mean over frames where the target is "
+        "visible and placed in 3D\n";
+    textCenterMmTable(out, entries);
+  }
 
   const EntryResult* kcf = findTracker(entries, "opencv-kcf");
   const EntryResult* csrt = findTracker(entries, "opencv-csrt");
@@ -216,6 +254,28 @@ std::string markdownReport(const std::vector<EntryResult>& entries, PaperReferen
       out += "- | - |\n";
     else
       appendf(out, "%s | %s |\n", num(a.pascal, 2).c_str(), num(a.centerPx, 2).c_str());
+  }
+
+  // 3D centre error, where the sequences know the target's 3D centre.
+  if (anyCenterMm(entries)) {
+    out += "\n| | ";
+    for (const SequenceResult& s : seqs)
+      appendf(out, "%s 3D err. [mm] | %s z err. [mm] | ", s.name.c_str(), s.name.c_str());
+    out += "Avg 3D err. [mm] | Avg z err. [mm] |\n|---|";
+    for (size_t i = 0; i < seqs.size(); ++i) out += "---:|---:|";
+    out += "---:|---:|\n";
+    for (const EntryResult& e : entries) {
+      appendf(out, "| %s | ", e.label().c_str());
+      for (const SequenceResult& s : e.sequences) {
+        if (!s.ran)
+          appendf(out, "%s | %s | ", notRunCell(s), notRunCell(s));
+        else
+          appendf(out, "%s | %s | ", num(s.figures.centerMm, 1).c_str(),
+                  num(s.figures.centerZMm, 1).c_str());
+      }
+      const Figures a = e.average();
+      appendf(out, "%s | %s |\n", num(a.centerMm, 1).c_str(), num(a.centerZMm, 1).c_str());
+    }
   }
 
   // Speed.

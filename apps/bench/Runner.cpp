@@ -28,6 +28,7 @@ bool loadSequence(FrameSource& source, int maxFrames, size_t maxBytes, Sequence*
   static FrameSlot slot;
   for (;;) {
     if (maxFrames > 0 && static_cast<int>(seq->frames.size()) >= maxFrames) break;
+    slot.hasTruthMm = false;  // only sources that know the 3D truth set it
     const ReadStatus st = source.next(slot);
     if (st == ReadStatus::End) break;
     if (st == ReadStatus::Error) {
@@ -47,6 +48,8 @@ bool loadSequence(FrameSource& source, int maxFrames, size_t maxBytes, Sequence*
     f.intrinsics = slot.intrinsics;
     f.hasGroundTruth = slot.hasGroundTruth;
     f.groundTruth = slot.groundTruth;
+    f.hasTruthMm = slot.hasTruthMm;
+    for (int a = 0; a < 3; ++a) f.truthCentreMm[a] = slot.truthCentreMm[a];
     if (px > 0) {
       const cv::Mat rgbMat(f.height, f.width, CV_8UC3, f.rgb.data());
       cv::cvtColor(rgbMat, f.bgr, cv::COLOR_RGB2BGR);
@@ -245,6 +248,11 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
       if (f.hasGroundTruth) {
         const FrameEval e = evaluateFrame(f.groundTruth, box);
         acc.add(f.groundTruth, box);
+        // 3D error where the target is visible and the tracker placed it in 3D.
+        float posMm[3];
+        if (f.hasTruthMm && !f.groundTruth.empty() && !box.empty() &&
+            tracker->lastPositionMm(posMm))
+          acc.addPosition(f.truthCentreMm, posMm);
         if (run == 0) {
           result.frameIndex.push_back(f.index);
           overlapSum.push_back(0.0);

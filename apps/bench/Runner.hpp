@@ -31,6 +31,8 @@ struct CachedFrame {
   CameraIntrinsics intrinsics{};
   bool hasGroundTruth = false;
   Box groundTruth{};
+  bool hasTruthMm = false;  // the target's true 3D centre is known (synthetic scenes)
+  float truthCentreMm[3] = {0.f, 0.f, 0.f};
   cv::Mat bgr;  // the same pixels for the OpenCV peers, converted once, outside the timings
 
   bool hasColour() const { return width > 0 && height > 0 && !rgb.empty(); }
@@ -69,6 +71,9 @@ class BenchTracker {
   // weigh, learn, total, filled by trackers that time their stages.
   virtual Box update(const CachedFrame& f, double stageUs[5]) = 0;
   virtual bool hasStages() const { return false; }
+  // The 3D centre [mm] (camera coordinates) the last update reported; false when it
+  // reported none (a 2D tracker, or no target).
+  virtual bool lastPositionMm(float /*out*/[3]) const { return false; }
 };
 
 struct EntrySpec {

@@ -119,6 +119,29 @@ TEST_CASE("ablations of best (a beyond-the-paper switch off) run as configuratio
   CHECK(r.out.find("4 frames left out") != std::string::npos);
 }
 
+TEST_CASE("3D presets place a synthetic target's centre within centimetres; 2D ones report none") {
+  // The scene's cylinder has an 80 mm radius: reporting its front surface, or a centre
+  // half a diameter off, would be 80 mm out in depth.
+  const std::string json = "bench_cli_centre_mm.json";
+  const Run r =
+      runBench("synth:moving --frames 60 --runs 2 --quiet --config best,2.1,2.4 --json " + json);
+  CHECK(r.exitCode == 0);
+  CHECK(r.out.find("3D centre error") != std::string::npos);
+  minijson::Value v;
+  REQUIRE(minijson::parse(readAll(json), &v));
+  REQUIRE(v.items.size() == 3);
+  for (int i = 0; i < 2; ++i) {
+    const minijson::Value* s = &v.items[static_cast<size_t>(i)].get("sequences")->items[0];
+    INFO(v.items[static_cast<size_t>(i)].get("config")->s);
+    REQUIRE(s->get("center_mm")->kind == minijson::Value::Number);
+    CHECK(s->get("center_mm")->n < 30.0);
+    CHECK(s->get("center_z_mm")->n < 15.0);
+  }
+  CHECK(v.items[2].get("config")->s == "2.4");
+  CHECK(v.items[2].get("sequences")->items[0].get("center_mm")->kind == minijson::Value::Null);
+  std::remove(json.c_str());
+}
+
 TEST_CASE("--rgb-only drops depth: best falls back to 2D, 2.1 cannot start (a finding)") {
   const char* kNoDepth = "cannot run: init failed: no depth";
   Run r = runBench("synth:moving --frames 6 --runs 1 --quiet --config best,2.1");

@@ -12,8 +12,9 @@ using namespace cuetrack::bench;
 
 namespace {
 
-const std::vector<std::string> kFigureKeys = {"frames",    "overlap",   "hit",     "pascal",
-                                              "center_px", "ms_median", "ms_mean", "allocs"};
+const std::vector<std::string> kFigureKeys = {"frames",    "overlap",   "hit",         "pascal",
+                                              "center_px", "center_mm", "center_z_mm", "ms_median",
+                                              "ms_mean",   "allocs"};
 
 EntryResult makeEntry(const std::string& tracker, const std::string& config, bool secondRan) {
   EntryResult e;
@@ -28,6 +29,8 @@ EntryResult makeEntry(const std::string& tracker, const std::string& config, boo
   a.figures.hit = 100;
   a.figures.pascal = 95.5;
   a.figures.centerPx = 4.25;
+  a.figures.centerMm = 12.5;
+  a.figures.centerZMm = 3.25;
   a.figures.msMedian = 1.5;
   a.figures.msMean = 2.0;
   a.figures.allocs = 0;
@@ -35,6 +38,7 @@ EntryResult makeEntry(const std::string& tracker, const std::string& config, boo
   b.name = "seq \"two\"";
   b.figures.overlap = 60;
   b.figures.centerPx = std::nan("");
+  b.figures.centerMm = b.figures.centerZMm = std::nan("");  // no 3D truth
   b.ran = secondRan;
   if (!secondRan) b.error = "cannot run: no colour";
   e.sequences = {a, b};
@@ -82,10 +86,15 @@ TEST_CASE("one tracker: the file holds that object, with the schema's keys in or
   const minijson::Value& s1 = v.get("sequences")->items[1];
   CHECK(s1.get("name")->s == "seq \"two\"");
   CHECK(s1.get("center_px")->kind == minijson::Value::Null);
+  CHECK(s0.get("center_mm")->n == Approx(12.5));
+  CHECK(s0.get("center_z_mm")->n == Approx(3.2).margin(0.051));  // one decimal
+  CHECK(s1.get("center_mm")->kind == minijson::Value::Null);
+  CHECK(s1.get("center_z_mm")->kind == minijson::Value::Null);
   // Average: the macro mean of the sequences (80 and 60), centre over the one that has it.
   const minijson::Value* avg = v.get("average");
   CHECK(avg->get("overlap")->n == Approx(70));
   CHECK(avg->get("center_px")->n == Approx(4.25));
+  CHECK(avg->get("center_mm")->n == Approx(12.5));
   CHECK(avg->get("frames")->n == 808);
 }
 
@@ -101,7 +110,8 @@ TEST_CASE("several trackers: an array of those objects; a sequence not run has n
   CHECK(v.items[1].get("config")->s == "default");
   const minijson::Value& notRun = v.items[1].get("sequences")->items[1];
   CHECK(notRun.get("frames")->n == 0);
-  for (const char* k : {"overlap", "hit", "pascal", "center_px", "ms_median", "ms_mean", "allocs"})
+  for (const char* k : {"overlap", "hit", "pascal", "center_px", "center_mm", "center_z_mm",
+                        "ms_median", "ms_mean", "allocs"})
     CHECK(notRun.get(k)->kind == minijson::Value::Null);
   // The average covers only the sequence it ran on.
   CHECK(v.items[1].get("average")->get("overlap")->n == Approx(80));

@@ -63,6 +63,34 @@ TEST_CASE("a run where no frame has both boxes has no centre distance") {
   CHECK(std::isnan(aggregateRuns({f}, {}, {}).centerPx));
 }
 
+TEST_CASE("3D centre error: distance and |z| in mm, hand-computed; none gives NaN") {
+  RunAccumulator acc;
+  CHECK(std::isnan(acc.figures().centerMm));
+  CHECK(std::isnan(acc.figures().centerZMm));
+  const float truth[3] = {100.f, -50.f, 2000.f};
+  const float a[3] = {103.f, -46.f, 2012.f};  // (3, 4, 12): 13 mm, z 12 mm
+  const float b[3] = {100.f, -50.f, 1995.f};  // 5 mm, all of it in z
+  acc.addPosition(truth, a);
+  acc.addPosition(truth, b);
+  const RunFigures f = acc.figures();
+  CHECK(f.centerMmFrames == 2);
+  CHECK(f.centerMm == Approx(9.0));   // (13 + 5) / 2
+  CHECK(f.centerZMm == Approx(8.5));  // (12 + 5) / 2
+  CHECK(f.frames == 0);               // overlap frames are counted apart
+
+  // Over runs, a run without 3D positions is left out; over sequences likewise.
+  RunFigures none;
+  none.centerMm = none.centerZMm = std::nan("");
+  const Figures g = aggregateRuns({f, none}, {}, {});
+  CHECK(g.centerMm == Approx(9.0));
+  CHECK(std::isnan(aggregateRuns({none}, {}, {}).centerMm));
+  Figures s2;
+  s2.centerMm = s2.centerZMm = std::nan("");
+  CHECK(averageFigures({g, s2}).centerMm == Approx(9.0));
+  CHECK(averageFigures({g, s2}).centerZMm == Approx(8.5));
+  CHECK(std::isnan(averageFigures({s2}).centerMm));
+}
+
 TEST_CASE("aggregation over runs: means of run figures, times pooled") {
   RunFigures a, b;
   a.frames = b.frames = 10;

@@ -18,11 +18,18 @@ using namespace cuetrack::bench;
 namespace {
 
 // A 160x120 textured background with a checkered 24x24 target moving 2 px per frame
-// to the right; ground truth is exact. Frame `errorAt` (if >= 0) fails to read.
+// to the right; ground truth is exact. Frame `errorAt` (if >= 0) fails to read. With
+// `truthMm`, the source also knows the target's 3D centre: 2 m ahead, 10 mm per frame right.
+// From frame `hiddenFrom` (if >= 0) on, the target is not visible.
 class MovingSquareSource final : public FrameSource {
  public:
-  MovingSquareSource(int frames, int errorAt, bool gtVisible = true)
-      : _frames(frames), _errorAt(errorAt), _gtVisible(gtVisible) {}
+  MovingSquareSource(int frames, int errorAt, bool gtVisible = true, bool truthMm = false,
+                     int hiddenFrom = -1)
+      : _frames(frames),
+        _errorAt(errorAt),
+        _hiddenFrom(hiddenFrom),
+        _gtVisible(gtVisible),
+        _truthMm(truthMm) {}
   ReadStatus next(FrameSlot& out) override {
     if (_next == _errorAt) {
       std::snprintf(_error, sizeof _error, "square/%06d.png: truncated PNG", _next);
@@ -44,7 +51,14 @@ class MovingSquareSource final : public FrameSource {
     out.index = _next;
     out.timeUs = static_cast<uint64_t>(_next) * 33333u;
     out.hasGroundTruth = true;
-    out.groundTruth = _gtVisible ? Box{float(x0), float(y0), float(size), float(size)} : Box{};
+    const bool visible = _gtVisible && (_hiddenFrom < 0 || _next < _hiddenFrom);
+    out.groundTruth = visible ? Box{float(x0), float(y0), float(size), float(size)} : Box{};
+    if (_truthMm) {
+      out.hasTruthMm = true;
+      out.truthCentreMm[0] = 10.f * static_cast<float>(_next);
+      out.truthCentreMm[1] = -100.f;
+      out.truthCentreMm[2] = 2000.f;
+    }
     ++_next;
     return ReadStatus::Ok;
   }
@@ -52,8 +66,8 @@ class MovingSquareSource final : public FrameSource {
   const char* name() const override { return "square"; }
 
  private:
-  int _frames, _errorAt, _next = 0;
-  bool _gtVisible;
+  int _frames, _errorAt, _hiddenFrom, _next = 0;
+  bool _gtVisible, _truthMm;
   char _error[128] = "";
 };
 
@@ -71,10 +85,24 @@ class ShiftTracker final : public BenchTracker {
     stageUs[4] = 1000;  // 1 ms total
     Box b = f.groundTruth;
     b.x += _shift;
+    for (int a = 0; a < 3; ++a) _positionMm[a] = f.truthCentreMm[a] + _offsetMm[a];
     return b;
+  }
+  // Reports the frame's 3D truth plus this offset [mm] (a 3D tracker's estimate).
+  void reportPositionMm(float dx, float dy, float dz) {
+    _has3d = true;
+    _offsetMm[0] = dx;
+    _offsetMm[1] = dy;
+    _offsetMm[2] = dz;
+  }
+  bool lastPositionMm(float out[3]) const override {
+    for (int a = 0; a < 3; ++a) out[a] = _positionMm[a];
+    return _has3d;
   }
 
  private:
+  bool _has3d = false;
+  float _offsetMm[3] = {0, 0, 0}, _positionMm[3] = {0, 0, 0};
   float _shift;
   bool _refuse;
   std::vector<uint64_t>* _seeds;
@@ -148,6 +176,34 @@ TEST_CASE("protocol: init at the first box, later frames scored, runs get consec
   REQUIRE(r.frameIndex.size() == 10);
   CHECK(r.frameIndex.front() == 1);
   CHECK(r.meanOverlap.front() == Approx(1.0 / 3.0));
+}
+
+TEST_CASE("3D centre error: scored where the source knows the 3D centre and the target shows") {
+  Progress quiet(false);
+  auto runWith = [&](FrameSource& src, bool report3d) {
+    const Sequence seq = load(src);
+    TrackerFactory factory = [&](const EntrySpec&, std::string*) {
+      auto t = std::make_unique<ShiftTracker>(0.f);
+      if (report3d) t->reportPositionMm(3.f, -4.f, 12.f);  // 13 mm off, 12 of them in z
+      return std::unique_ptr<BenchTracker>(std::move(t));
+    };
+    return runEntry({"fake", "default", 2}, seq, factory, RunOptions{}, quiet);
+  };
+  MovingSquareSource withTruth(6, -1, true, true);
+  SequenceResult r = runWith(withTruth, true);
+  REQUIRE(r.ran);
+  CHECK(r.figures.centerMm == Approx(13.0));
+  CHECK(r.figures.centerZMm == Approx(12.0));
+  CHECK(r.figures.centerPx == Approx(0.0));
+  // A 2D tracker (no 3D position), a source without 3D truth, a hidden target: no figure.
+  MovingSquareSource again(6, -1, true, true);
+  CHECK(std::isnan(runWith(again, false).figures.centerMm));
+  MovingSquareSource noTruth(6, -1, true, false);
+  CHECK(std::isnan(runWith(noTruth, true).figures.centerMm));
+  MovingSquareSource hidden(6, -1, true, true, 1);  // visible at the first frame only
+  r = runWith(hidden, true);
+  REQUIRE(r.ran);
+  CHECK(std::isnan(r.figures.centerMm));
 }
 
 TEST_CASE("thinning: every K-th frame after the first box, random drops the same for all") {

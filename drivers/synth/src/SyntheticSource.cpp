@@ -380,6 +380,8 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
 
   out.hasGroundTruth = true;
   out.groundTruth = visible > 0 ? _truth.projectedBox : Box{};
+  out.hasTruthMm = true;
+  for (int a = 0; a < 3; ++a) out.truthCentreMm[a] = _truth.centreMm[a];
   return true;
 }
 

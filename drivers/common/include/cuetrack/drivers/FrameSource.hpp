@@ -23,6 +23,10 @@ struct FrameSlot {
   int index = 0;                  // 0-based frame number within the source
   bool hasGroundTruth = false;    // the source has a ground-truth line for this frame
   Box groundTruth{};              // [px]; empty() = target not visible
+  // The target's true centre in camera coordinates [mm] (x right, y down, z forward), from
+  // sources that know it exactly (synthetic scenes); scores TrackResult::positionMm.
+  bool hasTruthMm = false;
+  float truthCentreMm[3] = {0.f, 0.f, 0.f};
 
   // Views for the tracker.
   Frame frame() const {
