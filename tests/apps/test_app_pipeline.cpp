@@ -26,6 +26,15 @@ class TinySource final : public FrameSource {
   TinySource(int frames, bool withTruth) : _frames(frames), _withTruth(withTruth) {}
   ReadStatus next(FrameSlot& out) override {
     if (_failAt == _index) return ReadStatus::Error;
+    if (_stallAt == _index) {
+      // A device that delivers nothing for a while: the wait passes in idle slices.
+      _stallAt = -1;
+      for (int i = 0; i < _stallSlices; ++i) {
+        _stallClock->advanceUs(FrameSource::kIdleSliceMs * 1000u);
+        if (_onSlice) _onSlice(i, _onSliceCtx);
+        if (idle()) return ReadStatus::End;
+      }
+    }
     if (_index >= _frames) return ReadStatus::End;
     if (_index >= _resizeFrom)
       out.rgb.resize(_resizeW, _resizeH);
@@ -42,6 +51,16 @@ class TinySource final : public FrameSource {
   const char* error() const override { return "tiny.seq: frame 3: truncated"; }
   const char* name() const override { return "tiny"; }
   void failAt(int i) { _failAt = i; }
+  // Before frame i the source waits `slices` idle slices, advancing `clock` through each
+  // and calling onSlice(slice, ctx) (the peer's doings meanwhile) before the idle hook.
+  void stallAt(int i, int slices, FakeClock* clock, void (*onSlice)(int, void*) = nullptr,
+               void* ctx = nullptr) {
+    _stallAt = i;
+    _stallSlices = slices;
+    _stallClock = clock;
+    _onSlice = onSlice;
+    _onSliceCtx = ctx;
+  }
   void visibleFrom(int i) { _visibleFrom = i; }  // ground truth empty before frame i
   void truthX(float x) { _truthX = x; }
   void resizeFrom(int i, int w, int h) {  // frames i... are w x h
@@ -55,6 +74,10 @@ class TinySource final : public FrameSource {
   bool _withTruth;
   int _index = 0;
   int _failAt = -1;
+  int _stallAt = -1, _stallSlices = 0;
+  FakeClock* _stallClock = nullptr;
+  void (*_onSlice)(int, void*) = nullptr;
+  void* _onSliceCtx = nullptr;
   int _visibleFrom = 0;
   float _truthX = 10.f;
   int _resizeFrom = 1 << 30, _resizeW = 0, _resizeH = 0;
@@ -359,6 +382,46 @@ TEST_CASE("a heartbeat goes out after 1 s without any message") {
   CHECK(msgs[0].u.heartbeat.time_us == rig.clock.nowUs());
   rig.pipeline.serviceLink();
   CHECK(rig.host.drain().empty());  // not again until another second passes
+}
+
+TEST_CASE("while the camera stalls, heartbeats still go out and commands are answered") {
+  static Rig rig(10, true);
+  REQUIRE(rig.step() == StepResult::Continue);
+  rig.host.drain();
+  // 2.5 s without a frame before frame 1 (the live Kinect waits up to its stall timeout);
+  // a RESET comes 0.5 s into it.
+  rig.source.stallAt(
+      1, 25, &rig.clock,
+      [](int slice, void* host) {
+        if (slice == 4) static_cast<Host*>(host)->send(command(CTP_CMD_RESET, 60));
+      },
+      &rig.host);
+  REQUIRE(rig.step() == StepResult::Continue);
+  const auto msgs = rig.host.drain();
+  CHECK(countType(msgs, CTP_MSG_HEARTBEAT) == 2);  // at 1 s and 2 s of silence
+  CHECK(countType(msgs, CTP_MSG_ACK) == 1);        // the RESET, answered mid-stall
+  CHECK(rig.tracker.resets == 1);
+  REQUIRE_FALSE(msgs.empty());
+  CHECK(msgs.back().type == CTP_MSG_TRACK);  // then the frame that came
+}
+
+TEST_CASE("a STOP that arrives while the camera stalls ends the wait and the run") {
+  static Rig rig(10, true);
+  REQUIRE(rig.step() == StepResult::Continue);
+  rig.host.drain();
+  // 100 s without a frame; a STOP comes 0.5 s into it.
+  rig.source.stallAt(
+      1, 1000, &rig.clock,
+      [](int slice, void* host) {
+        if (slice == 4) static_cast<Host*>(host)->send(command(CTP_CMD_STOP, 61));
+      },
+      &rig.host);
+  CHECK(rig.step() == StepResult::Stopped);
+  const auto msgs = rig.host.drain();
+  REQUIRE(msgs.size() == 1);
+  CHECK(msgs[0].type == CTP_MSG_ACK);
+  CHECK(msgs[0].u.ack.cmd_id == 61);
+  CHECK(rig.clock.nowUs() == 1000u + 2 * 33333u + 5 * 100000u);  // the STOP's own slice
 }
 
 TEST_CASE("a vanished serial peer is reported, tracking continues, the link comes back") {

@@ -160,9 +160,18 @@ TEST_CASE("a stream that stalls mid-run gives a clear error within the stall tim
   KinectOptions options;
   options.stallTimeoutMs = 300;
   REQUIRE(gKinect.open(options));
+  // The caller's idle hook runs between the wait's 100 ms slices (serial heartbeats).
+  static int idleCalls = 0;
+  gKinect.setIdleHook(
+      [](void*) {
+        ++idleCalls;
+        return false;
+      },
+      nullptr);
   int frames = 0;
   ReadStatus st;
   while ((st = gKinect.next(gLive)) == ReadStatus::Ok) ++frames;
+  CHECK(idleCalls >= 2);  // after 100 and 200 ms of the stall (and of any slow frame)
   const std::string why = gKinect.error();
   INFO(why);
   CHECK(st == ReadStatus::Error);

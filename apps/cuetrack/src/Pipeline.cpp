@@ -15,6 +15,13 @@ Pipeline::Pipeline(FrameSource& source, FrameSlot& slot, TrackerPort& tracker, c
       _reporter(reporter),
       _options(options) {
   _statusLastUs = _clock.nowUs();
+  _source.setIdleHook(&Pipeline::onSourceIdle, this);
+}
+
+bool Pipeline::onSourceIdle(void* self) {
+  Pipeline& p = *static_cast<Pipeline*>(self);
+  p.serviceLink();
+  return p._stopRequested;
 }
 
 bool Pipeline::addSink(platform::TrackSink* sink) {
@@ -139,17 +146,20 @@ bool Pipeline::sizeChanged(const Frame& frame) {
   return true;
 }
 
+StepResult Pipeline::stopped() {
+  if (_link) _link->drain(1000);  // the ACK goes out before we do
+  return StepResult::Stopped;
+}
+
 StepResult Pipeline::step() {
   serviceLink();
-  if (_stopRequested) {
-    if (_link) _link->drain(1000);  // the ACK goes out before we do
-    return StepResult::Stopped;
-  }
+  if (_stopRequested) return stopped();
   if (_options.maxFrames >= 0 && static_cast<int64_t>(_frames) >= _options.maxFrames) {
     return StepResult::Done;
   }
   const ReadStatus rs = _source.next(_slot);
-  if (rs == ReadStatus::End) return StepResult::Done;
+  // End with a STOP pending: it came while the source waited (onSourceIdle).
+  if (rs == ReadStatus::End) return _stopRequested ? stopped() : StepResult::Done;
   if (rs == ReadStatus::Error) {
     _reporter.report(_source.error());
     return StepResult::SourceError;

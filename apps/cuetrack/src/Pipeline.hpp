@@ -41,8 +41,12 @@ class Pipeline final : public AppControl {
  public:
   static constexpr int kMaxSinks = 3;
 
+  // Hooks into the source's waits (FrameSource::setIdleHook) until destroyed.
   Pipeline(FrameSource& source, FrameSlot& slot, TrackerPort& tracker, const Clock& clock,
            platform::Reporter& reporter, const PipelineOptions& options);
+  ~Pipeline() override { _source.setIdleHook(nullptr, nullptr); }
+  Pipeline(const Pipeline&) = delete;
+  Pipeline& operator=(const Pipeline&) = delete;
 
   bool addSink(platform::TrackSink* sink);
   void attachLink(SerialLink* link) { _link = link; }
@@ -64,6 +68,9 @@ class Pipeline final : public AppControl {
   const CommandHandler& commands() const { return _commands; }
 
  private:
+  // While the source waits for a frame: the link's work; a STOP ends the wait.
+  static bool onSourceIdle(void* self);
+  StepResult stopped();  // after a STOP: its ACK drained onto the line
   void dropPendingStart();
   // Initialise the tracker from a serial START / from --box or ground truth; true when
   // tracking starts on this frame (*initBox: the box given).

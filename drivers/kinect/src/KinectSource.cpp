@@ -405,7 +405,19 @@ ReadStatus KinectSource::next(FrameSlot& out) {
     return ReadStatus::Error;
   }
   const uint32_t waitMs = _started ? _options.stallTimeoutMs : _options.startTimeoutMs;
-  const kinect::Taken taken = _pairer.take(waitMs);
+  // The wait in slices, with the caller's idle hook between them (heartbeats in a stall).
+  kinect::Taken taken;
+  for (uint32_t waitedMs = 0;;) {
+    const uint32_t left = waitMs - waitedMs;
+    const uint32_t slice = left < kIdleSliceMs ? left : kIdleSliceMs;
+    taken = _pairer.take(slice);
+    waitedMs += slice;
+    if (taken.status != kinect::Taken::Status::Timeout || waitedMs >= waitMs) break;
+    if (idle()) {
+      std::snprintf(_error, sizeof _error, "%s: stopped", _name);
+      return ReadStatus::End;
+    }
+  }
   switch (taken.status) {
     case kinect::Taken::Status::Ok:
       copyOut(taken, out);

@@ -59,6 +59,26 @@ class FrameSource {
   virtual double nominalFps() const { return 0.0; }
   // Frames skipped as unreadable so far (with the skip-bad-frames option).
   virtual int skippedFrames() const { return 0; }
+
+  // A source that can wait long for a frame (the live Kinect: up to its stall timeout)
+  // calls `hook(ctx)` about every kIdleSliceMs while it waits, on the thread that called
+  // next(), so the caller keeps its serial link alive (heartbeats, commands) through a
+  // stall. A hook that returns true ends the wait: next() returns End. Sources that
+  // never wait (files, synthetic scenes) never call it.
+  using IdleHook = bool (*)(void* ctx);
+  static constexpr unsigned kIdleSliceMs = 100;
+  void setIdleHook(IdleHook hook, void* ctx) {
+    _idleHook = hook;
+    _idleCtx = ctx;
+  }
+
+ protected:
+  // True when the hook asks to stop waiting.
+  bool idle() { return _idleHook != nullptr && _idleHook(_idleCtx); }
+
+ private:
+  IdleHook _idleHook = nullptr;
+  void* _idleCtx = nullptr;
 };
 
 }  // namespace cuetrack
