@@ -57,8 +57,8 @@ const char* kUsage =
     "  --weak M        weak classifiers, 1..32 (default: the preset's)\n"
     "  --icount        read no clock (for qemu-icount: count(N) - count(0), / N)\n"
     "  --hash          print an FNV-1a hash of every frame's box, confidence and state\n"
-    "exit codes: 0 done, 1 bad command line, 2 the scene could not be rendered or the\n"
-    "  tracker refused its first box\n";
+    "exit codes: 0 done, 1 bad command line (an unknown --scene too), 2 a frame of the\n"
+    "  scene could not be rendered or the tracker refused its first box\n";
 
 constexpr int kExitUsage = 1;
 constexpr int kExitRun = 2;
