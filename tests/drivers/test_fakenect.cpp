@@ -424,3 +424,44 @@ TEST_CASE("fakenect writer refuses a folder that holds a recording", "[fakenect]
   CHECK(w.open((tmp / "empty").c_str()));  // an existing empty folder is fine
   CHECK(w.close());
 }
+
+TEST_CASE("what libfreenect's fakenect cannot replay is named before it exits or overruns",
+          "[fakenect][bad]") {
+  TempDir tmp;
+  char err[512];
+  const std::string dir = tmp / "rec";
+  writeScene(dir, "moving", 3);
+  REQUIRE(checkFakenectReplayable(dir.c_str(), err, sizeof err));  // control
+
+  // A missing frame file, an INDEX line it cannot parse, a truncated frame.
+  const std::string r1 = entries(dir, 'r').at(1);
+  std::remove((dir + "/" + r1).c_str());
+  CHECK_FALSE(checkFakenectReplayable(dir.c_str(), err, sizeof err));
+  CHECK(std::string(err).find(r1 + " is missing or not a regular file") != std::string::npos);
+  writeScene(tmp / "garbage", "moving", 2);
+  test::writeText(tmp / "garbage/INDEX.txt",
+                  test::readText(tmp / "garbage/INDEX.txt") + "x-garbage\n");
+  CHECK_FALSE(checkFakenectReplayable((tmp / "garbage").c_str(), err, sizeof err));
+  CHECK(std::string(err).find("INDEX.txt:") != std::string::npos);
+  writeScene(tmp / "cut", "moving", 2);
+  const std::string d0 = entries(tmp / "cut", 'd').at(0);
+  test::writeText(tmp / "cut/" + d0, test::readText(tmp / "cut/" + d0).substr(0, 1000));
+  CHECK_FALSE(checkFakenectReplayable((tmp / "cut").c_str(), err, sizeof err));
+  CHECK(std::string(err).find(d0 + ": truncated") != std::string::npos);
+
+  // Another size: our reader takes it, fakenect's fixed 640x480 buffers would not.
+  SceneSpec spec;
+  REQUIRE(makeScene("moving", &spec));
+  spec.frameCount = 2;
+  spec.width = 320;
+  spec.height = 240;
+  auto src = std::make_unique<SyntheticSource>(spec, 3);
+  auto slot = std::make_unique<FrameSlot>();
+  FakenectWriter w;
+  if (!w.open((tmp / "small").c_str())) FAIL(w.error());
+  while (src->next(*slot) == ReadStatus::Ok) REQUIRE(w.write(*slot));
+  REQUIRE(w.close());
+  CHECK_FALSE(checkFakenectReplayable((tmp / "small").c_str(), err, sizeof err));
+  CHECK(std::string(err).find("fakenect replays only 640x480") != std::string::npos);
+  CHECK(std::string(err).find('\n') == std::string::npos);
+}

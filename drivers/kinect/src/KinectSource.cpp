@@ -5,6 +5,8 @@
 // only when the real library is loaded. Never link it with -z now.
 #include "cuetrack/drivers/KinectSource.hpp"
 
+#include "cuetrack/drivers/FakenectReader.hpp"
+
 #include <dlfcn.h>
 #include <libfreenect.h>
 #include <libusb.h>
@@ -229,6 +231,8 @@ bool KinectSource::open(const KinectOptions& options) {
     FILE* f = std::fopen(index, "rb");
     if (!f) return fail("%s: cannot open (FAKENECT_PATH must name a fakenect recording)", index);
     std::fclose(f);
+    char why[sizeof _error];
+    if (!checkFakenectReplayable(path, why, sizeof why)) return fail("fakenect: %s", why);
   }
 
   for (int r = 0; r < 2048; ++r) _rawToMm[r] = kinect::rawToMm(static_cast<uint16_t>(r));
@@ -348,6 +352,13 @@ void KinectSource::onColour(_freenect_device* dev, void*, uint32_t timestamp) {
 }
 
 void KinectSource::close() {
+  // On the event thread itself: a library that exit()s inside its event processing
+  // (fakenect on a file it cannot read) runs static destructors there. The process is
+  // ending; joining ourselves would abort it, and libusb is mid-call: leave both alone.
+  if (_thread.joinable() && _thread.get_id() == std::this_thread::get_id()) {
+    _thread.detach();
+    return;
+  }
   if (_thread.joinable()) {
     _pairer.requestStop();
     _thread.join();

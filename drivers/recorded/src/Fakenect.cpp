@@ -98,6 +98,68 @@ bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
   return true;
 }
 
+bool checkFakenectReplayable(const char* dir, char* err, size_t errLen) {
+  const std::string index = std::string(dir) + "/INDEX.txt";
+  std::vector<uint8_t> text;
+  if (!rec::readFile(index.c_str(), text, err, errLen)) return false;
+  const char* t = reinterpret_cast<const char*>(text.data());
+  size_t pos = 0;
+  const char* line = nullptr;
+  size_t len = 0;
+  int lineNo = 0, frames = 0;
+  char why[200];
+  while (rec::nextLine(t, text.size(), &pos, &line, &len)) {
+    ++lineNo;
+    if (rec::blankLine(line, len)) continue;
+    rec::IndexEntry e;
+    if (!rec::parseIndexLine(line, len, &e, why, sizeof why)) {
+      std::snprintf(err, errLen, "%s:%d: %s", index.c_str(), lineNo, why);
+      return false;
+    }
+    const std::string path = std::string(dir) + "/" + std::string(line, len);
+    if (!rec::isFile(path.c_str())) {
+      std::snprintf(err, errLen, "%s:%d: %s is missing or not a regular file", index.c_str(),
+                    lineNo, path.c_str());
+      return false;
+    }
+    if (e.kind == 'a') continue;
+    uint8_t head[64];
+    long fileBytes = -1;
+    size_t n = 0;
+    if (FILE* f = std::fopen(path.c_str(), "rb")) {
+      n = std::fread(head, 1, sizeof head, f);
+      if (std::fseek(f, 0, SEEK_END) == 0) fileBytes = std::ftell(f);
+      std::fclose(f);
+    }
+    rec::PnmHeader h;
+    if (!rec::parsePnmHeaderPrefix(head, n, &h, why, sizeof why)) {
+      std::snprintf(err, errLen, "%s: %s", path.c_str(), why);
+      return false;
+    }
+    if (fileBytes < 0 || static_cast<size_t>(fileBytes) < h.dataOffset + h.dataBytes()) {
+      std::snprintf(err, errLen, "%s: truncated: %ld of %zu bytes", path.c_str(), fileBytes,
+                    h.dataOffset + h.dataBytes());
+      return false;
+    }
+    const bool colour = e.kind == 'r';
+    if (h.width != 640 || h.height != 480 || h.type != (colour ? '6' : '5') ||
+        h.maxval != (colour ? 255 : 65535)) {
+      std::snprintf(err, errLen,
+                    "%s: %dx%d P%c maxval %d; fakenect replays only 640x480 %s (read the "
+                    "folder with --source DIR instead)",
+                    path.c_str(), h.width, h.height, h.type, h.maxval,
+                    colour ? "P6 maxval 255" : "P5 maxval 65535");
+      return false;
+    }
+    frames += colour;
+  }
+  if (frames == 0) {
+    std::snprintf(err, errLen, "%s: no colour (r-*.ppm) entries", index.c_str());
+    return false;
+  }
+  return true;
+}
+
 void FakenectReader::entryPath(int entry, char* path, size_t len) const {
   std::snprintf(path, len, "%s/%s", _dir.c_str(), _files[static_cast<size_t>(entry)].c_str());
 }

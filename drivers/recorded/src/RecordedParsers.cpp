@@ -98,6 +98,18 @@ bool pnmNumber(const uint8_t* buf, size_t len, size_t* pos, int* out) {
 }  // namespace
 
 bool parsePnmHeader(const uint8_t* buf, size_t len, PnmHeader* out, char* err, size_t errLen) {
+  PnmHeader h;
+  if (!parsePnmHeaderPrefix(buf, len, &h, err, errLen)) return false;
+  if (len - h.dataOffset < h.dataBytes()) {
+    fail(err, errLen, "truncated: %zu of %zu pixel bytes", len - h.dataOffset, h.dataBytes());
+    return false;
+  }
+  *out = h;
+  return true;
+}
+
+bool parsePnmHeaderPrefix(const uint8_t* buf, size_t len, PnmHeader* out, char* err,
+                          size_t errLen) {
   if (len < 2 || buf[0] != 'P' || (buf[1] != '5' && buf[1] != '6')) {
     fail(err, errLen, "not a binary PGM/PPM (no P5/P6 magic)");
     return false;
@@ -126,10 +138,6 @@ bool parsePnmHeader(const uint8_t* buf, size_t len, PnmHeader* out, char* err, s
     return false;
   }
   h.dataOffset = p;
-  if (len - p < h.dataBytes()) {
-    fail(err, errLen, "truncated: %zu of %zu pixel bytes", len - p, h.dataBytes());
-    return false;
-  }
   *out = h;
   return true;
 }

@@ -61,4 +61,10 @@ class FakenectReader final : public FrameSource {
   char _error[512] = "";
 };
 
+// Whether libfreenect's fakenect can replay the recording in `dir`: it exit()s on an INDEX
+// line it cannot parse or a file it cannot open, and overruns its fixed 640x480 buffers on
+// other sizes. Checks every INDEX entry (name, a regular file, and for r-*.ppm / d-*.pgm a
+// 640x480 header of the right kind); false with "file: reason" (one line) in err.
+bool checkFakenectReplayable(const char* dir, char* err, size_t errLen);
+
 }  // namespace cuetrack

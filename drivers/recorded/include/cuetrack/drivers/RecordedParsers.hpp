@@ -25,6 +25,8 @@ struct PnmHeader {
   }
 };
 bool parsePnmHeader(const uint8_t* buf, size_t len, PnmHeader* out, char* err, size_t errLen);
+// The header alone, from the first bytes of a file (pixels not checked for length).
+bool parsePnmHeaderPrefix(const uint8_t* buf, size_t len, PnmHeader* out, char* err, size_t errLen);
 
 enum class Endian : uint8_t { Little, Big };  // fakenect writes little-endian, NYU big-endian
 
