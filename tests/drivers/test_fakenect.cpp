@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -423,6 +424,21 @@ TEST_CASE("fakenect writer refuses a folder that holds a recording", "[fakenect]
   REQUIRE(::mkdir((tmp / "empty").c_str(), 0755) == 0);
   CHECK(w.open((tmp / "empty").c_str()));  // an existing empty folder is fine
   CHECK(w.close());
+}
+
+TEST_CASE("a groundtruth.txt that is not a file is named, not taken for no ground truth",
+          "[fakenect][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "rec";
+  writeScene(dir, "moving", 2);
+  FakenectReader reader;
+  REQUIRE(reader.open(dir.c_str()));  // control
+  std::remove((dir + "/groundtruth.txt").c_str());
+  REQUIRE(::mkdir((dir + "/groundtruth.txt").c_str(), 0755) == 0);
+  CHECK_FALSE(reader.open(dir.c_str()));
+  CHECK(std::string(reader.error()) == dir + "/groundtruth.txt: not a regular file");
+  REQUIRE(::rmdir((dir + "/groundtruth.txt").c_str()) == 0);
+  REQUIRE(reader.open(dir.c_str()));  // a missing one is no ground truth
 }
 
 TEST_CASE("what libfreenect's fakenect cannot replay is named before it exits or overruns",

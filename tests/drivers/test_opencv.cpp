@@ -4,6 +4,7 @@
 
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -545,6 +546,20 @@ TEST_CASE("RGB-D folder: intrinsics outside sane bounds or the image are refused
     CHECK(reader.next(*f) == ReadStatus::Error);
     CHECK(std::string(reader.error()) ==
           dir + "/intrinsics.txt: principal point 600,120 outside the 320x240 image");
+  }
+  SECTION("intrinsics.txt or groundtruth.txt that is a folder: named, not ignored") {
+    RgbdFolderReader control;
+    REQUIRE(control.open(dir.c_str()));
+    std::remove((dir + "/intrinsics.txt").c_str());
+    REQUIRE(::mkdir((dir + "/intrinsics.txt").c_str(), 0755) == 0);
+    RgbdFolderReader reader;
+    CHECK_FALSE(reader.open(dir.c_str()));
+    CHECK(std::string(reader.error()) == dir + "/intrinsics.txt: not a regular file");
+    REQUIRE(::rmdir((dir + "/intrinsics.txt").c_str()) == 0);
+    std::remove((dir + "/groundtruth.txt").c_str());
+    REQUIRE(::mkdir((dir + "/groundtruth.txt").c_str(), 0755) == 0);
+    CHECK_FALSE(reader.open(dir.c_str()));
+    CHECK(std::string(reader.error()) == dir + "/groundtruth.txt: not a regular file");
   }
 }
 

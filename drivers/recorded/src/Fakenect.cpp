@@ -85,7 +85,7 @@ bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
              : 0.0;
 
   const std::string gtPath = opt.gtPath ? std::string(opt.gtPath) : _dir + "/groundtruth.txt";
-  if (opt.gtPath || rec::isFile(gtPath.c_str())) {
+  if (opt.gtPath || rec::exists(gtPath.c_str())) {
     if (!_gt.load(gtPath.c_str(), GtFormat::Bobot, _error, sizeof _error)) return false;
     const int n = static_cast<int>(_frames.size());
     // BoBoT convention: one box per frame, or none for the last frame.

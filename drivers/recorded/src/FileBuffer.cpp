@@ -86,6 +86,11 @@ bool isFile(const char* path) {
   return ::stat(path, &st) == 0 && S_ISREG(st.st_mode);
 }
 
+bool exists(const char* path) {
+  struct stat st {};
+  return ::lstat(path, &st) == 0;
+}
+
 bool makeDirectories(const char* path, char* err, size_t errLen) {
   char buf[1024];
   const size_t n = std::strlen(path);

@@ -128,7 +128,7 @@ bool BobotVideoReader::open(const char* aviPath, const SourceOptions& opt) {
     const size_t dot = _path.find_last_of('.');
     gtPath = (dot == std::string::npos ? _path : _path.substr(0, dot)) + ".gt.txt";
   }
-  if (opt.gtPath || rec::isFile(gtPath.c_str())) {
+  if (opt.gtPath || rec::exists(gtPath.c_str())) {
     if (!_gt.load(gtPath.c_str(), GtFormat::Bobot, _error, sizeof _error)) return false;
     if (_frameCount > 0 && !gtCountFits(_gt.count(), _frameCount)) {
       std::snprintf(_error, sizeof _error, "%s: %d ground-truth boxes for %d video frames",
@@ -194,7 +194,7 @@ bool ImageFolderReader::finishOpen(const char* gtPath, GtFormat format, bool gtR
     return false;
   }
   const std::string gt = _opt.gtPath ? std::string(_opt.gtPath) : std::string(gtPath);
-  if (_opt.gtPath || gtRequired || rec::isFile(gt.c_str())) {
+  if (_opt.gtPath || gtRequired || rec::exists(gt.c_str())) {
     if (!_gt.load(gt.c_str(), format, _error, sizeof _error)) return false;
     if (!gtCountFits(_gt.count(), frameCount())) {
       std::snprintf(_error, sizeof _error, "%s: %d ground-truth boxes for %d frames", gt.c_str(),
@@ -222,7 +222,7 @@ bool RgbdFolderReader::open(const char* dir, const SourceOptions& opt) {
   }
   const std::string kPath = _dir + "/intrinsics.txt";
   _haveIntrinsics = false;
-  if (rec::isFile(kPath.c_str())) {
+  if (rec::exists(kPath.c_str())) {
     std::vector<uint8_t> text;
     if (!rec::readFile(kPath.c_str(), text, _error, sizeof _error)) return false;
     char why[160];

@@ -17,6 +17,9 @@ bool writeFile2(const char* path, const void* a, size_t aLen, const void* b, siz
                 size_t errLen);
 bool isDirectory(const char* path);
 bool isFile(const char* path);
+// Anything by that name (a file, folder, FIFO, even a dangling symlink). An optional file
+// of a recording is read when it exists, so one of the wrong kind is reported, not ignored.
+bool exists(const char* path);
 // mkdir -p; on failure writes "path: reason".
 bool makeDirectories(const char* path, char* err, size_t errLen);
 // True (with "dir: already holds a recording (NAME); ..." in err) when dir holds a
