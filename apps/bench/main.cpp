@@ -18,6 +18,7 @@
 #include "Runner.hpp"
 #include "Sources.hpp"
 #include "TrackerAdapters.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
 using namespace cuetrack::bench;
@@ -57,6 +58,7 @@ bool writeText(const std::string& path, const std::string& text, std::string* er
 }  // namespace
 
 int main(int argc, char** argv) {
+  cuetrack::platform::ignoreWriteSignals();
   Options options;
   bool help = false;
   std::string err;

@@ -10,6 +10,7 @@
 
 #include "SequenceOut.hpp"
 #include "cuetrack/drivers/OpenSource.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
 
@@ -41,6 +42,7 @@ void usage(FILE* f) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cuetrack::platform::ignoreWriteSignals();
   const char* spec = nullptr;
   const char* out = nullptr;
   const char* format = "fakenect";

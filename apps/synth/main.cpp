@@ -8,6 +8,7 @@
 
 #include "SequenceOut.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
 
@@ -46,6 +47,7 @@ bool parseInt(const char* s, long lo, long hi, long* out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cuetrack::platform::ignoreWriteSignals();
   const char* scene = nullptr;
   const char* out = nullptr;
   const char* format = "fakenect";

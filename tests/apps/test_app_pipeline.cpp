@@ -304,6 +304,20 @@ TEST_CASE("a START that a RESET or STOP overtakes before the next frame is answe
   CHECK(msgs[1].u.ack.cmd_id == 61);
 }
 
+TEST_CASE("a START reaching past the image reports the part inside on its first frame") {
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  static Rig rig(5, false, o);
+  rig.host.send(startCommand(70, 50, 40, 100, 100));  // the frames are 64x48
+  REQUIRE(rig.step() == StepResult::Continue);
+  const ctp_track_t& t = rig.sink.at(0);
+  CHECK(t.state == CTP_STATE_TRACKING);
+  CHECK(t.box_px[0] == 50);
+  CHECK(t.box_px[1] == 40);
+  CHECK(t.box_px[2] == 14);
+  CHECK(t.box_px[3] == 8);
+}
+
 TEST_CASE("a START the tracker refuses gets ERROR rejected and leaves the app idle") {
   PipelineOptions o;
   o.useGroundTruth = false;

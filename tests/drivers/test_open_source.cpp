@@ -58,6 +58,7 @@ TEST_CASE("openFrameSource errors are one line naming the spec", "[open][bad]") 
       {tmp / "absent", "no such file or folder"},
       {tmp.path(), "not a recording"},
       {tmp / "x.avi", "no such file"},
+      {"/dev/null", "not a recording (a device"},  // it exists: not "no such file"
       {"", "no frame source"},
   };
   for (const Case& c : cases) {

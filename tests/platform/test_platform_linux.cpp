@@ -4,6 +4,8 @@
 
 #include <signal.h>
 #include <stdlib.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -74,4 +76,38 @@ TEST_CASE("SIGTERM and SIGINT only set the stop flag") {
   CHECK(stopRequested());
   CHECK(stopSignal() == SIGTERM);
   REQUIRE(raise(SIGPIPE) == 0);  // ignored: a closed pipe becomes a write error instead
+}
+
+TEST_CASE("a file-size limit (ulimit -f) is a write error, not a silent death") {
+  // In a child: the limit and the signal disposition are process-wide.
+  auto writeOverLimit = [](bool ignore) {
+    const pid_t pid = fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+      if (ignore)
+        ignoreWriteSignals();
+      else
+        signal(SIGXFSZ, SIG_DFL);  // an earlier test's installStopSignals() is inherited
+      rlimit lim{};
+      lim.rlim_cur = lim.rlim_max = 512;  // bytes
+      setrlimit(RLIMIT_FSIZE, &lim);
+      FdTrackSink csv;
+      if (!csv.openFile("platform_fsize.csv", TextFormat::Csv)) _exit(2);
+      ctp_track_t t{};
+      for (int i = 0; i < 100; ++i)
+        if (!csv.write(t))
+          _exit(std::string(csv.error()).find("File too large") != std::string::npos ? 0 : 3);
+      _exit(4);
+    }
+    int status = 0;
+    REQUIRE(waitpid(pid, &status, 0) == pid);
+    std::remove("platform_fsize.csv");
+    return status;
+  };
+  const int reported = writeOverLimit(true);
+  REQUIRE(WIFEXITED(reported));
+  CHECK(WEXITSTATUS(reported) == 0);         // the write failed with EFBIG and said so
+  const int killed = writeOverLimit(false);  // control: the default disposition kills
+  CHECK(WIFSIGNALED(killed));
+  CHECK(WTERMSIG(killed) == SIGXFSZ);
 }

@@ -2,9 +2,20 @@
 
 #include <cstdio>
 
+#include "cuetrack/core/FastMath.hpp"
 #include "cuetrack/platform/TrackText.hpp"
 
 namespace cuetrack::app {
+namespace {
+using fmath::clampf;
+
+Box clipToImage(const Box& b, int width, int height) {
+  const float w = static_cast<float>(width), h = static_cast<float>(height);
+  const float x0 = clampf(b.x, 0.f, w), y0 = clampf(b.y, 0.f, h);
+  const float x1 = clampf(b.x + b.w, 0.f, w), y1 = clampf(b.y + b.h, 0.f, h);
+  return Box{x0, y0, x1 - x0, y1 - y0};
+}
+}  // namespace
 
 Pipeline::Pipeline(FrameSource& source, FrameSlot& slot, TrackerPort& tracker, const Clock& clock,
                    platform::Reporter& reporter, const PipelineOptions& options)
@@ -180,12 +191,13 @@ StepResult Pipeline::step() {
   }
 
   if (initialised) {
-    // The init frame reports the box the tracker was given, with full confidence.
+    // The init frame reports the box the tracker was given, with full confidence, cut to
+    // the image as the tracker cuts it (a box reaching past the edge tracks what is inside).
     _targetActive = true;
     _trackWidth = frame.rgb.width;
     _trackHeight = frame.rgb.height;
     result.state = TrackState::Tracking;
-    result.box = initBox;
+    result.box = clipToImage(initBox, frame.rgb.width, frame.rgb.height);
     result.confidence = 1.f;
   } else if (_targetActive) {
     result = _tracker.update(frame);

@@ -3,6 +3,7 @@
 #include <dirent.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -401,7 +402,8 @@ bool RgbdFolderWriter::close() {
   char* err = _error;
   const size_t errLen = sizeof _error;
   if (_gtOpen && !_gt.close()) {
-    std::snprintf(err, errLen, "%s/groundtruth.txt: write failed", _dir.c_str());
+    std::snprintf(err, errLen, "%s/groundtruth.txt: write failed (%s)", _dir.c_str(),
+                  std::strerror(errno));
     return false;
   }
   _gtOpen = false;
@@ -438,7 +440,8 @@ bool OtbFolderWriter::write(const FrameSlot& frame) {
 
 bool OtbFolderWriter::close() {
   if (!_gt.close()) {
-    std::snprintf(_error, sizeof _error, "%s/groundtruth_rect.txt: write failed", _dir.c_str());
+    std::snprintf(_error, sizeof _error, "%s/groundtruth_rect.txt: write failed (%s)", _dir.c_str(),
+                  std::strerror(errno));
     return false;
   }
   return true;
@@ -505,21 +508,26 @@ bool BobotVideoWriter::write(const FrameSlot& frame) {
 bool BobotVideoWriter::close() {
   const bool wasOpen = _video->writer.isOpened();
   _video->writer.release();
-  if (!_gt.close()) {
-    std::snprintf(_error, sizeof _error, "%s: ground truth write failed", _path.c_str());
-    return false;
+  const bool gtOk = _gt.close();
+  const int gtErrno = errno;
+  if (wasOpen) {
+    // cv::VideoWriter reports no write error (a full disk, a file size limit): read the
+    // video back and count the frames that decode. The video first: it is the bigger loss.
+    cv::VideoCapture cap;
+    int n = 0;
+    if (cap.open(_path, cv::CAP_FFMPEG) && cap.isOpened())
+      while (n < _count && cap.grab()) ++n;
+    if (n != _count) {
+      std::snprintf(
+          _error, sizeof _error,
+          "%s: only %d of %d frames written could be read back (disk full or write error)",
+          _path.c_str(), n, _count);
+      return false;
+    }
   }
-  if (!wasOpen) return true;
-  // cv::VideoWriter reports no write error (a full disk, a file size limit): read the
-  // video back and count the frames that decode.
-  cv::VideoCapture cap;
-  int n = 0;
-  if (cap.open(_path, cv::CAP_FFMPEG) && cap.isOpened())
-    while (n < _count && cap.grab()) ++n;
-  if (n != _count) {
-    std::snprintf(_error, sizeof _error,
-                  "%s: only %d of %d frames written could be read back (disk full or write error)",
-                  _path.c_str(), n, _count);
+  if (!gtOk) {
+    std::snprintf(_error, sizeof _error, "%s.gt.txt: write failed (%s)",
+                  _path.substr(0, _path.size() - 4).c_str(), std::strerror(gtErrno));
     return false;
   }
   return true;

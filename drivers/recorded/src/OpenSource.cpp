@@ -132,7 +132,8 @@ std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptio
   }
   if (endsWith(s, ".avi")) {
     if (!rec::isFile(spec)) {
-      std::snprintf(err, errLen, "%s: no such file", spec);
+      std::snprintf(err, errLen, "%s: %s", spec,
+                    rec::exists(spec) ? "not a regular file" : "no such file");
       return nullptr;
     }
 #if CUETRACK_HAVE_OPENCV
@@ -141,8 +142,10 @@ std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptio
     return needsOpenCv(spec, "a video", err, errLen);
 #endif
   }
-  if (!rec::isFile(spec))
+  if (!rec::exists(spec))
     std::snprintf(err, errLen, "%s: no such file or folder", spec);
+  else if (!rec::isFile(spec))
+    std::snprintf(err, errLen, "%s: not a recording (a device, FIFO or socket)", spec);
   else
     std::snprintf(err, errLen, "%s: unknown format (expected .avi, a recording folder or synth:)",
                   spec);

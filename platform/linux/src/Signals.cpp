@@ -12,6 +12,14 @@ void onStop(int sig) {
 }
 }  // namespace
 
+void ignoreWriteSignals() {
+  struct sigaction ign {};
+  ign.sa_handler = SIG_IGN;
+  sigemptyset(&ign.sa_mask);
+  sigaction(SIGPIPE, &ign, nullptr);
+  sigaction(SIGXFSZ, &ign, nullptr);
+}
+
 void installStopSignals() {
   struct sigaction sa {};
   sa.sa_handler = onStop;
@@ -19,10 +27,7 @@ void installStopSignals() {
   sa.sa_flags = 0;  // no SA_RESTART: a blocking poll/read returns EINTR and the loop sees the flag
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
-  struct sigaction ign {};
-  ign.sa_handler = SIG_IGN;
-  sigemptyset(&ign.sa_mask);
-  sigaction(SIGPIPE, &ign, nullptr);
+  ignoreWriteSignals();
 }
 
 bool stopRequested() {
