@@ -5,6 +5,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,6 +29,13 @@ TEST_CASE("a full disk is one line naming the file, not a crash") {
   FdTrackSink missing;
   REQUIRE_FALSE(missing.openFile("/nonexistent-dir/x.csv", TextFormat::Csv));
   CHECK(std::string(missing.error()).find("/nonexistent-dir/x.csv: cannot create") == 0);
+  // A FIFO nobody reads: refused at once instead of blocking open() forever.
+  std::remove("platform_fifo");
+  REQUIRE(mkfifo("platform_fifo", 0644) == 0);
+  FdTrackSink fifo;
+  CHECK_FALSE(fifo.openFile("platform_fifo", TextFormat::Csv));
+  CHECK(std::string(fifo.error()) == "platform_fifo: cannot create: a FIFO with no reader");
+  std::remove("platform_fifo");
 }
 
 TEST_CASE("a CSV file gets the header and one row per message") {

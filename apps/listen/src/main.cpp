@@ -32,7 +32,8 @@ const char* kUsage =
     "  --tracks N           exit after N track messages\n"
     "  --idle-timeout S     exit with code 4 when nothing arrives for S seconds\n"
     "exit codes: 0 interrupted, port closed or --tracks reached; 1 bad command line;\n"
-    "  2 port cannot be opened or a command cannot be sent; 3 CSV write failed; 4 idle timeout\n";
+    "  2 port cannot be opened or a command cannot be sent; 3 the CSV (or, without --csv,\n"
+    "  stdout) write failed; 4 idle timeout\n";
 
 bool parseInt(const char* s, long lo, long hi, long* out) {
   char* end = nullptr;
@@ -146,7 +147,7 @@ int main(int argc, char** argv) {
       break;
     }
     if (r == listen::PollResult::OutputFailed) {
-      why = "CSV write failed";
+      why = csvPath ? "CSV write failed" : "track output (stdout) write failed";
       code = 3;
       break;
     }

@@ -21,11 +21,16 @@ bool FdTrackSink::openFile(const char* path, TextFormat format) {
     attachStdout(format);
   } else {
     std::snprintf(_name, sizeof _name, "%s", path);
-    _fd = ::open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    // O_NONBLOCK: a FIFO with no reader must not block open() forever (ENXIO instead);
+    // the writes themselves block as usual.
+    _fd = ::open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NONBLOCK, 0644);
     if (_fd < 0) {
-      std::snprintf(_error, sizeof _error, "%s: cannot create: %s", path, std::strerror(errno));
+      std::snprintf(_error, sizeof _error, "%s: cannot create: %s", path,
+                    errno == ENXIO ? "a FIFO with no reader" : std::strerror(errno));
       return false;
     }
+    const int flags = ::fcntl(_fd, F_GETFL);
+    if (flags >= 0) ::fcntl(_fd, F_SETFL, flags & ~O_NONBLOCK);
     _ownsFd = true;
   }
   if (format == TextFormat::Csv) {
