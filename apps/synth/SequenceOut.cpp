@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "cuetrack/drivers/FakenectWriter.hpp"
+#include "cuetrack/drivers/FileBuffer.hpp"
 #if CUETRACK_HAVE_OPENCV
 #include "cuetrack/drivers/OpenCvSources.hpp"
 #endif
@@ -24,6 +25,7 @@ class Out final : public SequenceOut {
 std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir, const char* name,
                                              [[maybe_unused]] double fps, char* err,
                                              size_t errLen) {
+  if (rec::pathTooLong(dir, err, errLen)) return nullptr;
   if (std::strcmp(format, "fakenect") == 0) {
     auto o = std::make_unique<Out<FakenectWriter>>();
     if (!o->writer.open(dir, name)) {

@@ -59,6 +59,7 @@ TEST_CASE("openFrameSource errors are one line naming the spec", "[open][bad]") 
       {tmp.path(), "not a recording"},
       {tmp / "x.avi", "no such file"},
       {"/dev/null", "not a recording (a device"},  // it exists: not "no such file"
+      {"/tmp/" + std::string(1000, 'd'), "path longer than 900 characters (1005)"},
       {"", "no frame source"},
   };
   for (const Case& c : cases) {

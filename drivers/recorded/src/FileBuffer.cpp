@@ -86,6 +86,14 @@ bool isFile(const char* path) {
   return ::stat(path, &st) == 0 && S_ISREG(st.st_mode);
 }
 
+bool pathTooLong(const char* path, char* err, size_t errLen) {
+  const size_t n = std::strlen(path);
+  if (n <= kMaxPathChars) return false;
+  std::snprintf(err, errLen, "%.60s...: path longer than %zu characters (%zu)", path, kMaxPathChars,
+                n);
+  return true;
+}
+
 bool exists(const char* path) {
   struct stat st {};
   return ::lstat(path, &st) == 0;

@@ -106,6 +106,7 @@ std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptio
   }
   const std::string s = spec;
   if (s.rfind("synth:", 0) == 0) return openSynth(s, opt, err, errLen);
+  if (rec::pathTooLong(spec, err, errLen)) return nullptr;
   if (s.rfind("pan:", 0) == 0) {
 #if CUETRACK_HAVE_OPENCV
     return openWith<StillPanReader>(spec, opt, err, errLen);

@@ -8,6 +8,13 @@
 
 namespace cuetrack::rec {
 
+// A recording's file paths are built in 1 KiB buffers (folder + file name) and its error
+// lines in similar ones: a longer folder path is refused up front, in one line, rather
+// than cut short.
+inline constexpr size_t kMaxPathChars = 900;
+// True (with "PATH...: path longer than N characters" in err) when path is too long.
+bool pathTooLong(const char* path, char* err, size_t errLen);
+
 // Replaces buf's contents with the file's bytes. On failure writes "path: reason" to err.
 // Anything but a regular file (a FIFO, a device, a folder) is refused without blocking.
 bool readFile(const char* path, std::vector<uint8_t>& buf, char* err, size_t errLen);
