@@ -35,14 +35,16 @@ TEST_CASE("defaults: best preset, synthetic-or-Kinect source, ground truth on") 
   CHECK(o.useGroundTruth);
   CHECK(o.frames == -1);
   CHECK(o.baud == 115200);
+  CHECK_FALSE(o.realtime);
 }
 
 TEST_CASE("every option is read") {
   AppOptions o;
   std::string err;
-  REQUIRE(parse({"--source", "synth:occlusion", "--box", "1,2.5,30,40", "--no-gt", "--serial",
-                 "/dev/ttyS1", "--baud", "9600", "--out", "x.csv", "--stdout", "--frames", "12",
-                 "--config", "2.1", "--seed", "99", "--quiet"},
+  REQUIRE(parse({"--source", "synth:occlusion", "--box",    "1,2.5,30,40", "--no-gt",
+                 "--serial", "/dev/ttyS1",      "--baud",   "9600",        "--out",
+                 "x.csv",    "--stdout",        "--frames", "12",          "--config",
+                 "2.1",      "--seed",          "99",       "--quiet",     "--realtime"},
                 &o, &err) == ParseResult::Run);
   CHECK(std::string(o.source) == "synth:occlusion");
   CHECK(o.hasBox);
@@ -57,6 +59,7 @@ TEST_CASE("every option is read") {
   CHECK(std::string(o.preset) == "2.1");
   CHECK(o.seed == 99);
   CHECK(o.quiet);
+  CHECK(o.realtime);
 }
 
 TEST_CASE("bad command lines give one line naming the option") {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "AllocCounter.hpp"
+#include "PacedSource.hpp"
 #include "Pipeline.hpp"
 #include "SerialLink.hpp"
 #include "cuetrack/platform/fake/FakeClock.hpp"
@@ -41,7 +42,7 @@ class TinySource final : public FrameSource {
     else
       out.rgb.resize(64, 48);
     out.hasDepth = false;
-    out.timeUs = static_cast<uint64_t>(_index) * 33333u;
+    out.timeUs = static_cast<uint64_t>(_index) * 33333u + (_index >= _gapFrom ? _gapUs : 0u);
     out.index = _index;
     out.hasGroundTruth = _withTruth;
     out.groundTruth = _index >= _visibleFrom ? Box{_truthX, 12.f, 20.f, 16.f} : Box{};
@@ -51,6 +52,10 @@ class TinySource final : public FrameSource {
   const char* error() const override { return "tiny.seq: frame 3: truncated"; }
   const char* name() const override { return "tiny"; }
   void failAt(int i) { _failAt = i; }
+  void gapBefore(int i, uint64_t us) {  // timestamps from frame i on are us later
+    _gapFrom = i;
+    _gapUs = us;
+  }
   // Before frame i the source waits `slices` idle slices, advancing `clock` through each
   // and calling onSlice(slice, ctx) (the peer's doings meanwhile) before the idle hook.
   void stallAt(int i, int slices, FakeClock* clock, void (*onSlice)(int, void*) = nullptr,
@@ -75,6 +80,8 @@ class TinySource final : public FrameSource {
   int _index = 0;
   int _failAt = -1;
   int _stallAt = -1, _stallSlices = 0;
+  int _gapFrom = 1 << 30;
+  uint64_t _gapUs = 0;
   FakeClock* _stallClock = nullptr;
   void (*_onSlice)(int, void*) = nullptr;
   void* _onSliceCtx = nullptr;
@@ -600,4 +607,42 @@ TEST_CASE("a refused ground-truth box ends the run, naming the ground-truth file
             "rec/groundtruth.txt: frame 2: box -4,12,20,16 refused by the tracker: "
             "BoxOutsideImage") == 1);
   CHECK(rig.tracker.inits == 0);
+}
+
+TEST_CASE("--realtime: frames come at the recording's own times, the link served meanwhile") {
+  FakeClock clock(5000);
+  FakeSleeper sleeper(clock);
+  TinySource tiny(10, false);  // 30 fps timestamps
+  PacedSource paced(tiny, clock, sleeper);
+  static FrameSlot slot;
+  REQUIRE(paced.next(slot) == ReadStatus::Ok);  // the first at once
+  CHECK(clock.nowUs() == 5000);
+  REQUIRE(paced.next(slot) == ReadStatus::Ok);
+  CHECK(clock.nowUs() == 5000 + 33333);  // due one frame period after the first
+  clock.advanceUs(50000);                // a tracker slower than the camera: no wait
+  const int calls = sleeper.calls;
+  REQUIRE(paced.next(slot) == ReadStatus::Ok);
+  CHECK(sleeper.calls == calls);
+  for (int i = 3; i < 10; ++i) REQUIRE(paced.next(slot) == ReadStatus::Ok);
+  CHECK(clock.nowUs() == 5000 + 9 * 33333);  // back on the recording's schedule
+  CHECK(paced.next(slot) == ReadStatus::End);
+  CHECK(std::string(paced.name()) == "tiny");
+
+  // A recording with a 1 s gap before frame 2: the idle hook runs after every slice of
+  // the wait (100 ms at most), and a hook that asks to stop ends it.
+  TinySource gap(5, false);
+  gap.gapBefore(2, 1000000);
+  PacedSource gapPaced(gap, clock, sleeper);
+  struct Hook {
+    int calls = 0;
+    static bool fn(void* self) { return ++static_cast<Hook*>(self)->calls == 3; }
+  } hook;
+  gapPaced.setIdleHook(&Hook::fn, &hook);
+  const uint64_t t0 = clock.nowUs();
+  REQUIRE(gapPaced.next(slot) == ReadStatus::Ok);
+  REQUIRE(gapPaced.next(slot) == ReadStatus::Ok);  // 33 ms: one short slice
+  CHECK(hook.calls == 1);
+  CHECK(gapPaced.next(slot) == ReadStatus::End);  // stopped 200 ms into the gap
+  CHECK(hook.calls == 3);
+  CHECK(clock.nowUs() == t0 + 33333 + 200000);
 }

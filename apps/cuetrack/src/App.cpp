@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "Options.hpp"
+#include "PacedSource.hpp"
 #include "Pipeline.hpp"
 #include "SerialLink.hpp"
 #include "Sources.hpp"
@@ -50,6 +51,9 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report(err);
     return kExitSource;
   }
+  static platform::MonotonicSleeper sleeper;
+  static PacedSource paced(*source, clock, sleeper, &platform::stopRequested);
+  if (opt.realtime) source = &paced;  // a live Kinect is paced by its own clock anyway
 
   static platform::FdTrackSink fileSink;
   static platform::FdTrackSink stdoutSink;

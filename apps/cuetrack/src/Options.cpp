@@ -66,6 +66,8 @@ const char* usageText() {
          "  --stdout           one line per frame on stdout as well\n"
          "run:\n"
          "  --frames N         stop after N frames (a synthetic scene then lasts N frames)\n"
+         "  --realtime         play a recording or synthetic scene at its own frame rate (its\n"
+         "                     timestamps), as the camera would; default: as fast as it tracks\n"
          "  --config NAME      tracker preset: best (default), 1.1-1.4, 2.1-2.5\n"
          "  --seed N           random seed (default 1)\n"
          "  --quiet            no status line (fps, dropped frames, state) on stderr\n"
@@ -98,6 +100,8 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       out->forceStdout = true;
     } else if (std::strcmp(a, "--quiet") == 0) {
       out->quiet = true;
+    } else if (std::strcmp(a, "--realtime") == 0) {
+      out->realtime = true;
     } else if (std::strcmp(a, "--source") == 0) {
       if (!value(&v)) return ParseResult::Error;
       // kinect:MODE: the tracker needs colour, so both streams or colour alone.

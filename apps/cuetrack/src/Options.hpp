@@ -30,6 +30,7 @@ struct AppOptions {
   const char* preset = "best";
   uint64_t seed = 1;
   bool quiet = false;
+  bool realtime = false;  // play recordings and scenes at their own frame rate
 };
 
 enum class ParseResult : uint8_t { Run, Help, Error };

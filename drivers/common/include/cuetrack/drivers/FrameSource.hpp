@@ -75,6 +75,8 @@ class FrameSource {
  protected:
   // True when the hook asks to stop waiting.
   bool idle() { return _idleHook != nullptr && _idleHook(_idleCtx); }
+  // A source that wraps another hands its caller's hook on to it.
+  void passIdleHookTo(FrameSource& inner) const { inner.setIdleHook(_idleHook, _idleCtx); }
 
  private:
   IdleHook _idleHook = nullptr;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "cuetrack/core/Clock.hpp"
+#include "cuetrack/platform/Sleeper.hpp"
 
 namespace cuetrack::platform {
 
@@ -14,6 +15,22 @@ class FakeClock final : public Clock {
 
  private:
   uint64_t _nowUs;
+};
+
+// Sleeping moves the fake clock: paced code runs at once and the test reads the time.
+class FakeSleeper final : public Sleeper {
+ public:
+  explicit FakeSleeper(FakeClock& clock) : _clock(clock) {}
+  void sleepUs(uint64_t us) override {
+    _clock.advanceUs(us);
+    sleptUs += us;
+    ++calls;
+  }
+  uint64_t sleptUs = 0;
+  int calls = 0;
+
+ private:
+  FakeClock& _clock;
 };
 
 }  // namespace cuetrack::platform

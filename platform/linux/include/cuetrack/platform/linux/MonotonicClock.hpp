@@ -2,12 +2,19 @@
 #pragma once
 
 #include "cuetrack/core/Clock.hpp"
+#include "cuetrack/platform/Sleeper.hpp"
 
 namespace cuetrack::platform {
 
 class MonotonicClock final : public Clock {
  public:
   uint64_t nowUs() const override;
+};
+
+// nanosleep on CLOCK_MONOTONIC; a signal (SIGINT) ends it early.
+class MonotonicSleeper final : public Sleeper {
+ public:
+  void sleepUs(uint64_t us) override;
 };
 
 }  // namespace cuetrack::platform

@@ -1,0 +1,37 @@
+// --realtime: a recording or a synthetic scene played at its own frame rate, by its
+// timestamps, as a camera would deliver it (otherwise frames come as fast as the tracker
+// takes them). While it waits between frames it calls its caller's idle hook every
+// FrameSource::kIdleSliceMs, like the live Kinect, so the serial link stays served.
+#pragma once
+
+#include "cuetrack/core/Clock.hpp"
+#include "cuetrack/drivers/FrameSource.hpp"
+#include "cuetrack/platform/Sleeper.hpp"
+
+namespace cuetrack::app {
+
+class PacedSource final : public FrameSource {
+ public:
+  // stopRequested (may be null) is polled between slices too (SIGINT during a long gap).
+  PacedSource(FrameSource& inner, const Clock& clock, platform::Sleeper& sleeper,
+              bool (*stopRequested)() = nullptr)
+      : _inner(inner), _clock(clock), _sleeper(sleeper), _stopRequested(stopRequested) {}
+
+  ReadStatus next(FrameSlot& out) override;
+  const char* error() const override { return _inner.error(); }
+  const char* name() const override { return _inner.name(); }
+  int frameCount() const override { return _inner.frameCount(); }
+  double nominalFps() const override { return _inner.nominalFps(); }
+  int skippedFrames() const override { return _inner.skippedFrames(); }
+
+ private:
+  FrameSource& _inner;
+  const Clock& _clock;
+  platform::Sleeper& _sleeper;
+  bool (*_stopRequested)();
+  bool _started = false;
+  uint64_t _firstFrameUs = 0;  // the first frame's timestamp
+  uint64_t _firstWallUs = 0;   // when it was handed out
+};
+
+}  // namespace cuetrack::app
