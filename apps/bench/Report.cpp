@@ -45,16 +45,38 @@ std::string fit(const std::string& s, size_t width) {
   return s.size() <= width ? s : s.substr(0, width - 1) + "~";
 }
 
-// Text table in the paper's layout: per sequence two figures, then the averages.
-void textAccuracyTable(std::string& out, const std::vector<EntryResult>& entries, bool table1) {
+// Two figures per sequence, then the averages: the paper's table layout, for each pair.
+struct FigurePair {
+  const char* textHead[2];
+  const char* markdownHead[2];
+  double Figures::*field[2];
+  int decimals;
+  bool textCpu, markdownCpu;  // a cpu [ms] column before the averages
+};
+const FigurePair kTable1{
+    {"Over.", "Hit"}, {"Over.", "Hit"}, {&Figures::overlap, &Figures::hit}, 2, true, true};
+const FigurePair kTable2{{"pascal", "dist."},
+                         {"pascal", "dist. [px]"},
+                         {&Figures::pascal, &Figures::centerPx},
+                         2,
+                         true,
+                         false};
+const FigurePair kCentreMm{{"3D", "z"},
+                           {"3D err. [mm]", "z err. [mm]"},
+                           {&Figures::centerMm, &Figures::centerZMm},
+                           1,
+                           false,
+                           false};
+
+void textTable(std::string& out, const std::vector<EntryResult>& entries, const FigurePair& c) {
   const auto& seqs = entries.front().sequences;
   appendf(out, "%-22s", "");
   for (const SequenceResult& s : seqs) appendf(out, " %-15s", fit(s.name, 15).c_str());
-  appendf(out, " %-23s\n", "Averages");
+  appendf(out, c.textCpu ? " %-23s\n" : " %-15s\n", "Averages");
   appendf(out, "%-22s", "tracker");
-  for (size_t i = 0; i < seqs.size(); ++i)
-    appendf(out, " %7s %7s", table1 ? "Over." : "pascal", table1 ? "Hit" : "dist.");
-  appendf(out, " %7s %7s %7s\n", "cpu", table1 ? "Over." : "pascal", table1 ? "Hit" : "dist.");
+  for (size_t i = 0; i < seqs.size(); ++i) appendf(out, " %7s %7s", c.textHead[0], c.textHead[1]);
+  if (c.textCpu) appendf(out, " %7s", "cpu");
+  appendf(out, " %7s %7s\n", c.textHead[0], c.textHead[1]);
   for (const EntryResult& e : entries) {
     appendf(out, "%-22s", fit(e.label(), 22).c_str());
     for (const SequenceResult& s : e.sequences) {
@@ -62,18 +84,47 @@ void textAccuracyTable(std::string& out, const std::vector<EntryResult>& entries
         appendf(out, " %15s", notRunCell(s));
         continue;
       }
-      const Figures& f = s.figures;
-      appendf(out, " %7s %7s", num(table1 ? f.overlap : f.pascal, 2).c_str(),
-              num(table1 ? f.hit : f.centerPx, 2).c_str());
+      appendf(out, " %7s %7s", num(s.figures.*c.field[0], c.decimals).c_str(),
+              num(s.figures.*c.field[1], c.decimals).c_str());
     }
     const Figures a = e.average();
     const bool any = e.sequencesRan() > 0;
-    appendf(out, " %7s %7s %7s", any ? num(a.msMean, 2).c_str() : "-",
-            any ? num(table1 ? a.overlap : a.pascal, 2).c_str() : "-",
-            any ? num(table1 ? a.hit : a.centerPx, 2).c_str() : "-");
+    if (c.textCpu) appendf(out, " %7s", any ? num(a.msMean, 2).c_str() : "-");
+    appendf(out, " %7s %7s", any ? num(a.*c.field[0], c.decimals).c_str() : "-",
+            any ? num(a.*c.field[1], c.decimals).c_str() : "-");
     if (any && e.sequencesRan() < static_cast<int>(e.sequences.size()))
       appendf(out, "  (over %d of %zu sequences)", e.sequencesRan(), e.sequences.size());
     out += "\n";
+  }
+}
+
+void markdownTable(std::string& out, const std::vector<EntryResult>& entries, const FigurePair& c) {
+  const auto& seqs = entries.front().sequences;
+  out += "| | ";
+  for (const SequenceResult& s : seqs)
+    appendf(out, "%s %s | %s %s | ", s.name.c_str(), c.markdownHead[0], s.name.c_str(),
+            c.markdownHead[1]);
+  if (c.markdownCpu) out += "cpu [ms] | ";
+  appendf(out, "Avg %s | Avg %s |\n|---|", c.markdownHead[0], c.markdownHead[1]);
+  for (size_t i = 0; i < seqs.size(); ++i) out += "---:|---:|";
+  out += c.markdownCpu ? "---:|---:|---:|\n" : "---:|---:|\n";
+  for (const EntryResult& e : entries) {
+    appendf(out, "| %s | ", e.label().c_str());
+    for (const SequenceResult& s : e.sequences) {
+      if (!s.ran)
+        appendf(out, "%s | %s | ", notRunCell(s), notRunCell(s));
+      else
+        appendf(out, "%s | %s | ", num(s.figures.*c.field[0], c.decimals).c_str(),
+                num(s.figures.*c.field[1], c.decimals).c_str());
+    }
+    const Figures a = e.average();
+    if (e.sequencesRan() == 0) {
+      out += c.markdownCpu ? "- | - | - |\n" : "- | - |\n";
+      continue;
+    }
+    if (c.markdownCpu) appendf(out, "%s | ", num(a.msMean, 2).c_str());
+    appendf(out, "%s | %s |\n", num(a.*c.field[0], c.decimals).c_str(),
+            num(a.*c.field[1], c.decimals).c_str());
   }
 }
 
@@ -83,30 +134,6 @@ bool anyCenterMm(const std::vector<EntryResult>& entries) {
     for (const SequenceResult& s : e.sequences)
       if (s.ran && !std::isnan(s.figures.centerMm)) return true;
   return false;
-}
-
-// Per sequence the 3D centre error and its depth part [mm], then the averages; n/a for a
-// tracker that reports no 3D position.
-void textCenterMmTable(std::string& out, const std::vector<EntryResult>& entries) {
-  const auto& seqs = entries.front().sequences;
-  appendf(out, "%-22s", "");
-  for (const SequenceResult& s : seqs) appendf(out, " %-15s", fit(s.name, 15).c_str());
-  appendf(out, " %-15s\n%-22s", "Averages", "tracker");
-  for (size_t i = 0; i <= seqs.size(); ++i) appendf(out, " %7s %7s", "3D", "z");
-  out += "\n";
-  for (const EntryResult& e : entries) {
-    appendf(out, "%-22s", fit(e.label(), 22).c_str());
-    for (const SequenceResult& s : e.sequences) {
-      if (!s.ran) {
-        appendf(out, " %15s", notRunCell(s));
-        continue;
-      }
-      appendf(out, " %7s %7s", num(s.figures.centerMm, 1).c_str(),
-              num(s.figures.centerZMm, 1).c_str());
-    }
-    const Figures a = e.average();
-    appendf(out, " %7s %7s\n", num(a.centerMm, 1).c_str(), num(a.centerZMm, 1).c_str());
-  }
 }
 
 // Failed sequences once each, then every tracker that could not run, with the reason.
@@ -143,14 +170,14 @@ std::string textReport(const std::vector<EntryResult>& entries) {
   out +=
       "Overlap and hit rate [%] (the paper's Table 1 layout); cpu = mean ms per frame, "
       "tracking only\n";
-  textAccuracyTable(out, entries, true);
+  textTable(out, entries, kTable1);
   out += "\nPASCAL score [%] and mean centre distance [px] (the paper's Table 2 layout)\n";
-  textAccuracyTable(out, entries, false);
+  textTable(out, entries, kTable2);
   if (anyCenterMm(entries)) {
     out +=
         "\n3D centre error and its depth part [mm], mean over frames where the target is "
         "visible and placed in 3D\n";
-    textCenterMmTable(out, entries);
+    textTable(out, entries, kCentreMm);
   }
 
   const EntryResult* kcf = findTracker(entries, "opencv-kcf");
@@ -184,29 +211,7 @@ std::string markdownReport(const std::vector<EntryResult>& entries, PaperReferen
   const auto& seqs = entries.front().sequences;
   char letter[8];
 
-  // Table 1 layout.
-  out += "| | ";
-  for (const SequenceResult& s : seqs)
-    appendf(out, "%s Over. | %s Hit | ", s.name.c_str(), s.name.c_str());
-  out += "cpu [ms] | Avg Over. | Avg Hit |\n|---|";
-  for (size_t i = 0; i < seqs.size(); ++i) out += "---:|---:|";
-  out += "---:|---:|---:|\n";
-  for (const EntryResult& e : entries) {
-    appendf(out, "| %s | ", e.label().c_str());
-    for (const SequenceResult& s : e.sequences) {
-      if (!s.ran)
-        appendf(out, "%s | %s | ", notRunCell(s), notRunCell(s));
-      else
-        appendf(out, "%s | %s | ", num(s.figures.overlap, 2).c_str(),
-                num(s.figures.hit, 2).c_str());
-    }
-    const Figures a = e.average();
-    if (e.sequencesRan() == 0)
-      out += "- | - | - |\n";
-    else
-      appendf(out, "%s | %s | %s |\n", num(a.msMean, 2).c_str(), num(a.overlap, 2).c_str(),
-              num(a.hit, 2).c_str());
-  }
+  markdownTable(out, entries, kTable1);
   if (ref == PaperReference::Table1) {
     const char* tests[4] = {"1.1", "1.2", "1.3", "1.4"};
     for (const char* t : tests) {
@@ -233,49 +238,12 @@ std::string markdownReport(const std::vector<EntryResult>& entries, PaperReferen
     }
   }
 
-  // Table 2 layout.
-  out += "\n| | ";
-  for (const SequenceResult& s : seqs)
-    appendf(out, "%s pascal | %s dist. [px] | ", s.name.c_str(), s.name.c_str());
-  out += "Avg pascal | Avg dist. [px] |\n|---|";
-  for (size_t i = 0; i < seqs.size(); ++i) out += "---:|---:|";
-  out += "---:|---:|\n";
-  for (const EntryResult& e : entries) {
-    appendf(out, "| %s | ", e.label().c_str());
-    for (const SequenceResult& s : e.sequences) {
-      if (!s.ran)
-        appendf(out, "%s | %s | ", notRunCell(s), notRunCell(s));
-      else
-        appendf(out, "%s | %s | ", num(s.figures.pascal, 2).c_str(),
-                num(s.figures.centerPx, 2).c_str());
-    }
-    const Figures a = e.average();
-    if (e.sequencesRan() == 0)
-      out += "- | - |\n";
-    else
-      appendf(out, "%s | %s |\n", num(a.pascal, 2).c_str(), num(a.centerPx, 2).c_str());
-  }
-
-  // 3D centre error, where the sequences know the target's 3D centre.
+  out += "\n";
+  markdownTable(out, entries, kTable2);
+  // The 3D centre's error, where the sequences know the target's 3D centre.
   if (anyCenterMm(entries)) {
-    out += "\n| | ";
-    for (const SequenceResult& s : seqs)
-      appendf(out, "%s 3D err. [mm] | %s z err. [mm] | ", s.name.c_str(), s.name.c_str());
-    out += "Avg 3D err. [mm] | Avg z err. [mm] |\n|---|";
-    for (size_t i = 0; i < seqs.size(); ++i) out += "---:|---:|";
-    out += "---:|---:|\n";
-    for (const EntryResult& e : entries) {
-      appendf(out, "| %s | ", e.label().c_str());
-      for (const SequenceResult& s : e.sequences) {
-        if (!s.ran)
-          appendf(out, "%s | %s | ", notRunCell(s), notRunCell(s));
-        else
-          appendf(out, "%s | %s | ", num(s.figures.centerMm, 1).c_str(),
-                  num(s.figures.centerZMm, 1).c_str());
-      }
-      const Figures a = e.average();
-      appendf(out, "%s | %s |\n", num(a.centerMm, 1).c_str(), num(a.centerZMm, 1).c_str());
-    }
+    out += "\n";
+    markdownTable(out, entries, kCentreMm);
   }
 
   // Speed.
