@@ -24,11 +24,14 @@ using cuetrack::test::TempDir;
 
 namespace {
 
-// Writes `frames` frames of a scene as a fakenect recording.
-void writeScene(const std::string& dir, const char* scene, int frames, uint64_t seed = 3) {
+// Writes `frames` frames of a scene as a fakenect recording (640x480 unless told).
+void writeScene(const std::string& dir, const char* scene, int frames, uint64_t seed = 3,
+                int width = 640, int height = 480) {
   SceneSpec spec;
   REQUIRE(makeScene(scene, &spec));
   spec.frameCount = frames;
+  spec.width = width;
+  spec.height = height;
   auto src = std::make_unique<SyntheticSource>(spec, seed);
   auto slot = std::make_unique<FrameSlot>();
   FakenectWriter w;
@@ -311,20 +314,8 @@ TEST_CASE("fakenect: a frame of another size than the first is refused", "[faken
   TempDir tmp;
   const std::string dir = tmp / "rec";
   writeScene(dir, "moving", 3);
-  {  // a 320x240 recording whose first colour and depth files replace frame 1's
-    SceneSpec spec;
-    REQUIRE(makeScene("moving", &spec));
-    spec.frameCount = 1;
-    spec.width = 320;
-    spec.height = 240;
-    auto src = std::make_unique<SyntheticSource>(spec, 3);
-    auto slot = std::make_unique<FrameSlot>();
-    FakenectWriter w;
-    if (!w.open((tmp / "small").c_str())) FAIL(w.error());
-    REQUIRE(src->next(*slot) == ReadStatus::Ok);
-    REQUIRE(w.write(*slot));
-    REQUIRE(w.close());
-  }
+  // A 320x240 recording whose first colour and depth files replace frame 1's.
+  writeScene(tmp / "small", "moving", 1, 3, 320, 240);
   const std::string r1 = entries(dir, 'r').at(1), d1 = entries(dir, 'd').at(1);
   test::writeText(dir + "/" + r1, test::readText(tmp / "small/" + entries(tmp / "small", 'r')[0]));
   test::writeText(dir + "/" + d1, test::readText(tmp / "small/" + entries(tmp / "small", 'd')[0]));
@@ -466,17 +457,7 @@ TEST_CASE("what libfreenect's fakenect cannot replay is named before it exits or
   CHECK(std::string(err).find(d0 + ": truncated") != std::string::npos);
 
   // Another size: our reader takes it, fakenect's fixed 640x480 buffers would not.
-  SceneSpec spec;
-  REQUIRE(makeScene("moving", &spec));
-  spec.frameCount = 2;
-  spec.width = 320;
-  spec.height = 240;
-  auto src = std::make_unique<SyntheticSource>(spec, 3);
-  auto slot = std::make_unique<FrameSlot>();
-  FakenectWriter w;
-  if (!w.open((tmp / "small").c_str())) FAIL(w.error());
-  while (src->next(*slot) == ReadStatus::Ok) REQUIRE(w.write(*slot));
-  REQUIRE(w.close());
+  writeScene(tmp / "small", "moving", 2, 3, 320, 240);
   CHECK_FALSE(checkFakenectReplayable((tmp / "small").c_str(), err, sizeof err));
   CHECK(std::string(err).find("fakenect replays only 640x480") != std::string::npos);
   CHECK(std::string(err).find('\n') == std::string::npos);
