@@ -311,6 +311,24 @@ TEST_CASE("a START that a RESET or STOP overtakes before the next frame is answe
   CHECK(msgs[1].u.ack.cmd_id == 61);
 }
 
+TEST_CASE("a START still waiting for its frame when the run ends is answered busy") {
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  static Rig rig(1, false, o);  // one frame, then the end of the source
+  REQUIRE(rig.step() == StepResult::Continue);
+  rig.host.send(startCommand(80, 5, 6, 20, 16));
+  REQUIRE(rig.step() == StepResult::Done);
+  CHECK(countType(rig.host.drain(), CTP_MSG_ERROR) == 0);  // not yet: the app decides at exit
+  rig.pipeline.finish();                                   // as App does after the loop
+  const auto msgs = rig.host.drain();
+  REQUIRE(msgs.size() == 1);
+  CHECK(msgs[0].type == CTP_MSG_ERROR);
+  CHECK(msgs[0].u.error.cmd_id == 80);
+  CHECK(msgs[0].u.error.code == CTP_E_BUSY);
+  rig.pipeline.finish();
+  CHECK(rig.host.drain().empty());  // one reply, not two
+}
+
 TEST_CASE("a START reaching past the image reports the part inside on its first frame") {
   PipelineOptions o;
   o.useGroundTruth = false;
@@ -461,15 +479,28 @@ TEST_CASE("a vanished serial peer is reported, tracking continues, the link come
   const auto msgs = rig.host.drain();
   REQUIRE(countType(msgs, CTP_MSG_TRACK) > 0);
   CHECK(msgs.back().u.track.state == CTP_STATE_TRACKING);
+  // The messages of the outage were dropped and counted; seq shows them as a gap.
+  CHECK(rig.link.stats().txDropped >= 5);
+  CHECK(msgs.back().u.track.seq == rig.link.stats().sent + rig.link.stats().txDropped - 1);
 }
 
 TEST_CASE("a stalled peer never blocks: messages that do not fit are dropped and counted") {
-  static Rig rig(200, true);
+  static Rig rig(201, true);
   rig.cable.setCapacityAtoB(100);  // the peer stops reading after 100 bytes
   for (int i = 0; i < 200; ++i) REQUIRE(rig.step() == StepResult::Continue);
   CHECK(rig.sink.size() == 200);
   CHECK(rig.link.stats().txDropped > 100);
   CHECK(rig.link.stats().sent + rig.link.stats().txDropped >= 200);
+  // The host sees every dropped message as a gap in seq (section 3 of the protocol).
+  rig.cable.setCapacityAtoB(1 << 20);
+  rig.host.drain();  // what got through before the stall
+  REQUIRE(rig.step() == StepResult::Continue);
+  const auto msgs = rig.host.drain();
+  REQUIRE_FALSE(msgs.empty());
+  const ctp_message_t& last = msgs.back();
+  REQUIRE(last.type == CTP_MSG_TRACK);
+  CHECK(last.u.track.seq == rig.link.stats().sent + rig.link.stats().txDropped - 1);
+  CHECK(last.u.track.seq > rig.link.stats().sent);  // the drops left a gap
 }
 
 TEST_CASE("a failing output is reported once, the rest goes on, the run is marked") {

@@ -94,6 +94,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
 
   StepResult r = StepResult::Continue;
   while (r == StepResult::Continue && !platform::stopRequested()) r = pipeline.step();
+  pipeline.finish();
 
   if (link && !link->drain(1000))
     reporter.report("serial: could not send the last messages within 1 s");

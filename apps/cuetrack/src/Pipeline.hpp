@@ -52,6 +52,9 @@ class Pipeline final : public AppControl {
   void attachLink(SerialLink* link) { _link = link; }
 
   StepResult step();
+  // The run is over (end of source, --frames, a signal, an error): a START still waiting
+  // for its frame is answered ERROR busy, so every command has had its one reply.
+  void finish() { dropPendingStart(); }
 
   // Serial-side work without a frame (also done by step()): commands, heartbeats.
   void serviceLink();

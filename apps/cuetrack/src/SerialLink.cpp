@@ -22,6 +22,8 @@ void SerialLink::lost(const char* why) {
   if (!_connected) return;
   _connected = false;
   ++_stats.disconnects;
+  // The queued messages are lost with the line: count them (one 0x00 ends each frame).
+  for (size_t i = 0; i < _txSize; ++i) _stats.txDropped += _tx[(_txHead + i) % kTxQueueBytes] == 0;
   _txHead = _txSize = 0;
   _rxPos = _rxLen = 0;
   _lastRetryUs = _clock.nowUs();
@@ -110,8 +112,19 @@ size_t SerialLink::receive(InboundEvent* events, size_t max) {
   return count;
 }
 
+// Every message takes the next seq whether or not it goes out: one the device cannot put
+// on the line (queue full, link down) shows at the host as a gap in seq, and is counted.
+bool SerialLink::transmit(const uint8_t* wire, size_t n) {
+  ++_seq;
+  if (enqueue(wire, n)) {
+    ++_stats.sent;
+    return true;
+  }
+  ++_stats.txDropped;
+  return false;
+}
+
 bool SerialLink::sendTrack(ctp_track_t track) {
-  if (!_connected) return false;
   if (_rateHz > 0 && _haveSentTrack) {
     const uint64_t periodUs = 1000000u / _rateHz;
     // 10 % slack: frame times jitter, and 30 fps at rate 15 must give every 2nd frame.
@@ -120,12 +133,7 @@ bool SerialLink::sendTrack(ctp_track_t track) {
   track.seq = nextSeq();
   uint8_t wire[CTP_MAX_WIRE];
   const size_t n = ctp_encode_track(&track, wire, sizeof wire);
-  if (!enqueue(wire, n)) {
-    ++_stats.txDropped;
-    return false;
-  }
-  ++_seq;
-  ++_stats.sent;
+  if (!transmit(wire, n)) return false;
   _haveSentTrack = true;
   _lastTrackTimeUs = track.time_us;
   return true;
@@ -143,37 +151,19 @@ void SerialLink::sendHeartbeat(uint8_t state, uint32_t frames) {
   h.frames = frames;
   h.rx_errors = _stats.rxErrors;
   uint8_t wire[CTP_MAX_WIRE];
-  const size_t n = ctp_encode_heartbeat(&h, wire, sizeof wire);
-  if (enqueue(wire, n)) {
-    ++_seq;
-    ++_stats.sent;
-  } else {
-    ++_stats.txDropped;
-  }
+  transmit(wire, ctp_encode_heartbeat(&h, wire, sizeof wire));
 }
 
 void SerialLink::sendAck(uint8_t cmdType, uint16_t cmdId) {
   const ctp_ack_t a{nextSeq(), cmdType, cmdId};
   uint8_t wire[CTP_MAX_WIRE];
-  const size_t n = ctp_encode_ack(&a, wire, sizeof wire);
-  if (enqueue(wire, n)) {
-    ++_seq;
-    ++_stats.sent;
-  } else {
-    ++_stats.txDropped;
-  }
+  transmit(wire, ctp_encode_ack(&a, wire, sizeof wire));
 }
 
 void SerialLink::sendError(uint8_t cmdType, uint16_t cmdId, uint8_t code) {
   const ctp_error_t e{nextSeq(), cmdType, cmdId, code};
   uint8_t wire[CTP_MAX_WIRE];
-  const size_t n = ctp_encode_error(&e, wire, sizeof wire);
-  if (enqueue(wire, n)) {
-    ++_seq;
-    ++_stats.sent;
-  } else {
-    ++_stats.txDropped;
-  }
+  transmit(wire, ctp_encode_error(&e, wire, sizeof wire));
 }
 
 }  // namespace cuetrack::app

@@ -61,6 +61,7 @@ class SerialLink {
 
  private:
   bool enqueue(const uint8_t* bytes, size_t n);
+  bool transmit(const uint8_t* wire, size_t n);  // a whole message, with its seq
   uint32_t nextSeq() const { return _seq; }
   void lost(const char* why);
   void flush();

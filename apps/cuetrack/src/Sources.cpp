@@ -10,6 +10,7 @@
 #include "cuetrack/drivers/KinectSource.hpp"
 #endif
 #include "cuetrack/drivers/OpenSource.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 
 namespace cuetrack::app {
 namespace {
@@ -39,6 +40,7 @@ KinectSource& kinect() {
 FrameSource* openKinect(KinectStreams streams, char* err, size_t errLen) {
   KinectOptions options;
   options.streams = streams;
+  options.stopRequested = &platform::stopRequested;  // SIGINT/SIGTERM end a wait for frames
   if (!kinect().open(options)) {
     std::snprintf(err, errLen, "%s", kinect().error());
     return nullptr;
