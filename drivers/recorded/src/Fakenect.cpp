@@ -16,6 +16,31 @@ std::string baseName(const std::string& path) {
   const size_t slash = p.find_last_of('/');
   return slash == std::string::npos ? p : p.substr(slash + 1);
 }
+
+// Reads INDEX.txt and calls onEntry(lineNo, line, len, entry) for every non-blank line
+// (false from it stops the walk); a line that is not an entry is "INDEX:line: why".
+template <typename OnEntry>
+bool walkIndex(const std::string& indexPath, char* err, size_t errLen, OnEntry&& onEntry) {
+  std::vector<uint8_t> text;
+  if (!rec::readFile(indexPath.c_str(), text, err, errLen)) return false;
+  const char* t = reinterpret_cast<const char*>(text.data());
+  size_t pos = 0;
+  const char* line = nullptr;
+  size_t len = 0;
+  int lineNo = 0;
+  char why[200];
+  while (rec::nextLine(t, text.size(), &pos, &line, &len)) {
+    ++lineNo;
+    if (rec::blankLine(line, len)) continue;
+    rec::IndexEntry e;
+    if (!rec::parseIndexLine(line, len, &e, why, sizeof why)) {
+      std::snprintf(err, errLen, "%s:%d: %s", indexPath.c_str(), lineNo, why);
+      return false;
+    }
+    if (!onEntry(lineNo, line, len, e)) return false;
+  }
+  return true;
+}
 }  // namespace
 
 bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
@@ -31,47 +56,36 @@ bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
   _error[0] = '\0';
 
   const std::string indexPath = _dir + "/INDEX.txt";
-  std::vector<uint8_t> text;
-  if (!rec::readFile(indexPath.c_str(), text, _error, sizeof _error)) return false;
-  const char* t = reinterpret_cast<const char*>(text.data());
-  size_t pos = 0;
-  const char* line = nullptr;
-  size_t len = 0;
-  int lineNo = 0;
   int lastDepth = -1;
   std::vector<int> waitingForDepth;  // colour entries seen before any depth entry
-  char why[200];
   int prevLine = 0;
-  while (rec::nextLine(t, text.size(), &pos, &line, &len)) {
-    ++lineNo;
-    if (rec::blankLine(line, len)) continue;
-    rec::IndexEntry e;
-    if (!rec::parseIndexLine(line, len, &e, why, sizeof why)) {
-      std::snprintf(_error, sizeof _error, "%s:%d: %s", indexPath.c_str(), lineNo, why);
-      return false;
-    }
-    // Capture order: a time going back (a reordered INDEX, a clock step) would give
-    // frames times out of order; refuse it rather than guess.
-    if (!_seconds.empty() && e.seconds < _seconds.back()) {
-      std::snprintf(_error, sizeof _error,
-                    "%s:%d: time %.6f s goes back from %.6f s on line %d (entries must be in "
-                    "capture order)",
-                    indexPath.c_str(), lineNo, e.seconds, _seconds.back(), prevLine);
-      return false;
-    }
-    prevLine = lineNo;
-    const int entry = static_cast<int>(_files.size());
-    _files.emplace_back(line, len);
-    _seconds.push_back(e.seconds);
-    if (e.kind == 'd') {
-      lastDepth = entry;
-      for (int f : waitingForDepth) _frames[static_cast<size_t>(f)].depthEntry = entry;
-      waitingForDepth.clear();
-    } else if (e.kind == 'r') {
-      if (lastDepth < 0) waitingForDepth.push_back(static_cast<int>(_frames.size()));
-      _frames.push_back({entry, lastDepth});
-    }
-  }
+  const bool indexOk = walkIndex(
+      indexPath, _error, sizeof _error,
+      [&](int lineNo, const char* line, size_t len, const rec::IndexEntry& e) {
+        // Capture order: a time going back (a reordered INDEX, a clock step) would give
+        // frames times out of order; refuse it rather than guess.
+        if (!_seconds.empty() && e.seconds < _seconds.back()) {
+          std::snprintf(_error, sizeof _error,
+                        "%s:%d: time %.6f s goes back from %.6f s on line %d (entries must be in "
+                        "capture order)",
+                        indexPath.c_str(), lineNo, e.seconds, _seconds.back(), prevLine);
+          return false;
+        }
+        prevLine = lineNo;
+        const int entry = static_cast<int>(_files.size());
+        _files.emplace_back(line, len);
+        _seconds.push_back(e.seconds);
+        if (e.kind == 'd') {
+          lastDepth = entry;
+          for (int f : waitingForDepth) _frames[static_cast<size_t>(f)].depthEntry = entry;
+          waitingForDepth.clear();
+        } else if (e.kind == 'r') {
+          if (lastDepth < 0) waitingForDepth.push_back(static_cast<int>(_frames.size()));
+          _frames.push_back({entry, lastDepth});
+        }
+        return true;
+      });
+  if (!indexOk) return false;
   if (_frames.empty()) {
     std::snprintf(_error, sizeof _error, "%s: no colour (r-*.ppm) entries", indexPath.c_str());
     return false;
@@ -100,59 +114,49 @@ bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
 
 bool checkFakenectReplayable(const char* dir, char* err, size_t errLen) {
   const std::string index = std::string(dir) + "/INDEX.txt";
-  std::vector<uint8_t> text;
-  if (!rec::readFile(index.c_str(), text, err, errLen)) return false;
-  const char* t = reinterpret_cast<const char*>(text.data());
-  size_t pos = 0;
-  const char* line = nullptr;
-  size_t len = 0;
-  int lineNo = 0, frames = 0;
-  char why[200];
-  while (rec::nextLine(t, text.size(), &pos, &line, &len)) {
-    ++lineNo;
-    if (rec::blankLine(line, len)) continue;
-    rec::IndexEntry e;
-    if (!rec::parseIndexLine(line, len, &e, why, sizeof why)) {
-      std::snprintf(err, errLen, "%s:%d: %s", index.c_str(), lineNo, why);
-      return false;
-    }
-    const std::string path = std::string(dir) + "/" + std::string(line, len);
-    if (!rec::isFile(path.c_str())) {
-      std::snprintf(err, errLen, "%s:%d: %s is missing or not a regular file", index.c_str(),
-                    lineNo, path.c_str());
-      return false;
-    }
-    if (e.kind == 'a') continue;
-    uint8_t head[64];
-    long fileBytes = -1;
-    size_t n = 0;
-    if (FILE* f = std::fopen(path.c_str(), "rb")) {
-      n = std::fread(head, 1, sizeof head, f);
-      if (std::fseek(f, 0, SEEK_END) == 0) fileBytes = std::ftell(f);
-      std::fclose(f);
-    }
-    rec::PnmHeader h;
-    if (!rec::parsePnmHeaderPrefix(head, n, &h, why, sizeof why)) {
-      std::snprintf(err, errLen, "%s: %s", path.c_str(), why);
-      return false;
-    }
-    if (fileBytes < 0 || static_cast<size_t>(fileBytes) < h.dataOffset + h.dataBytes()) {
-      std::snprintf(err, errLen, "%s: truncated: %ld of %zu bytes", path.c_str(), fileBytes,
-                    h.dataOffset + h.dataBytes());
-      return false;
-    }
-    const bool colour = e.kind == 'r';
-    if (h.width != 640 || h.height != 480 || h.type != (colour ? '6' : '5') ||
-        h.maxval != (colour ? 255 : 65535)) {
-      std::snprintf(err, errLen,
-                    "%s: %dx%d P%c maxval %d; fakenect replays only 640x480 %s (read the "
-                    "folder with --source DIR instead)",
-                    path.c_str(), h.width, h.height, h.type, h.maxval,
-                    colour ? "P6 maxval 255" : "P5 maxval 65535");
-      return false;
-    }
-    frames += colour;
-  }
+  int frames = 0;
+  const bool ok = walkIndex(
+      index, err, errLen, [&](int lineNo, const char* line, size_t len, const rec::IndexEntry& e) {
+        const std::string path = std::string(dir) + "/" + std::string(line, len);
+        if (!rec::isFile(path.c_str())) {
+          std::snprintf(err, errLen, "%s:%d: %s is missing or not a regular file", index.c_str(),
+                        lineNo, path.c_str());
+          return false;
+        }
+        if (e.kind == 'a') return true;
+        uint8_t head[64];
+        long fileBytes = -1;
+        size_t n = 0;
+        if (FILE* f = std::fopen(path.c_str(), "rb")) {
+          n = std::fread(head, 1, sizeof head, f);
+          if (std::fseek(f, 0, SEEK_END) == 0) fileBytes = std::ftell(f);
+          std::fclose(f);
+        }
+        rec::PnmHeader h;
+        char why[200];
+        if (!rec::parsePnmHeaderPrefix(head, n, &h, why, sizeof why)) {
+          std::snprintf(err, errLen, "%s: %s", path.c_str(), why);
+          return false;
+        }
+        if (fileBytes < 0 || static_cast<size_t>(fileBytes) < h.dataOffset + h.dataBytes()) {
+          std::snprintf(err, errLen, "%s: truncated: %ld of %zu bytes", path.c_str(), fileBytes,
+                        h.dataOffset + h.dataBytes());
+          return false;
+        }
+        const bool colour = e.kind == 'r';
+        if (h.width != 640 || h.height != 480 || h.type != (colour ? '6' : '5') ||
+            h.maxval != (colour ? 255 : 65535)) {
+          std::snprintf(err, errLen,
+                        "%s: %dx%d P%c maxval %d; fakenect replays only 640x480 %s (read the "
+                        "folder with --source DIR instead)",
+                        path.c_str(), h.width, h.height, h.type, h.maxval,
+                        colour ? "P6 maxval 255" : "P5 maxval 65535");
+          return false;
+        }
+        frames += colour;
+        return true;
+      });
+  if (!ok) return false;
   if (frames == 0) {
     std::snprintf(err, errLen, "%s: no colour (r-*.ppm) entries", index.c_str());
     return false;
