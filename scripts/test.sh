@@ -45,9 +45,18 @@ for f in "${fuzzers[@]}"; do
   seeds="tests/fuzz/seeds/${name#fuzz_}"
   [ -d "$seeds" ] || seeds=""
   echo "-- $name"
-  "$f" -max_total_time="$FUZZ_SECONDS" -print_final_stats=1 -rss_limit_mb=2048 "$corpus" $seeds 2>&1 \
-    | grep -E 'stat::number_of_executed_units|ERROR|SUMMARY|Done' || true
-  test "${PIPESTATUS[0]}" -eq 0
+  # The fuzzer's own exit code decides (a crash, a leak, a timeout); the log keeps the
+  # reproducer's name. (Not a pipe into grep: `|| true` would reset PIPESTATUS.)
+  flog="build/fuzz/$name.log"
+  frc=0
+  "$f" -max_total_time="$FUZZ_SECONDS" -print_final_stats=1 -rss_limit_mb=2048 "$corpus" $seeds \
+    >"$flog" 2>&1 || frc=$?
+  grep -E 'stat::number_of_executed_units|ERROR|SUMMARY|Done' "$flog" || true
+  if [ "$frc" -ne 0 ]; then
+    tail -n 40 "$flog" >&2
+    echo "fuzz: $name failed (exit $frc); full log: $flog" >&2
+    exit 1
+  fi
 done
 recap+=("$(printf '%-10s %5ss  %d fuzz targets, %ss each, no crash' fuzz $(( $(date +%s) - t0 )) ${#fuzzers[@]} "$FUZZ_SECONDS")")
 
