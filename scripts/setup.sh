@@ -17,8 +17,8 @@ HOST_PKGS=(
   python3
 )
 CROSS_PKGS=(
-  libfreenect-dev:arm64 libusb-1.0-0-dev:arm64 libfreenect0.5:arm64
-  libfreenect-dev:armhf libusb-1.0-0-dev:armhf libfreenect0.5:armhf
+  libfreenect-dev:arm64 libusb-1.0-0-dev:arm64 libfreenect0.5:arm64 libstdc++6:arm64
+  libfreenect-dev:armhf libusb-1.0-0-dev:armhf libfreenect0.5:armhf libstdc++6:armhf
 )
 
 SUDO=""  # root in CI; through sudo, `env` below carries DEBIAN_FRONTEND past sudo's env_reset

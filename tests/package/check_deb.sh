@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# Builds this build's .deb with cpack and checks what a board would get: the control
+# fields (architecture, dependencies found by dpkg-shlibdeps, the conffile), the files
+# (programs, service, settings, udev rule, protocol sources), and that the packaged
+# cuetrack runs (through the build's emulator on a cross build), both on the synthetic
+# scene and with the service's own command line from the packaged settings.
+#   check_deb.sh BUILD_DIR DEB_ARCH WITH_FREENECT(ON|OFF) [EMULATOR...]
+set -euo pipefail
+[ $# -ge 3 ] || { echo "usage: check_deb.sh BUILD_DIR DEB_ARCH ON|OFF [EMULATOR...]" >&2; exit 1; }
+build=$(cd "$1" && pwd) arch=$2 freenect=$3
+shift 3
+emu=("$@")
+fail() { echo "check_deb: $*" >&2; exit 1; }
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/cuetrack-deb.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+cpack --config "$build/CPackConfig.cmake" -B "$work/out" >"$work/cpack.log" 2>&1 ||
+  { cat "$work/cpack.log" >&2; fail "cpack failed"; }
+deb=$(find "$work/out" -maxdepth 1 -name "cuetrack_*_$arch.deb" | head -n 1)
+[ -n "$deb" ] || fail "no cuetrack_*_$arch.deb in $(ls "$work/out")"
+echo "package: $(basename "$deb")"
+
+field() { dpkg-deb -f "$deb" "$1"; }
+[ "$(field Package)" = cuetrack ] || fail "Package is '$(field Package)'"
+[ "$(field Architecture)" = "$arch" ] || fail "Architecture is '$(field Architecture)', not $arch"
+deps=$(field Depends)
+echo "Depends: $deps"
+want_deps=(libc6 libstdc++6)
+[ "$freenect" = ON ] && want_deps+=(libfreenect0.5 libusb-1.0-0)
+dep_names=$(tr ',' '\n' <<<"$deps" | sed 's/^ *//; s/[ (].*//')
+for d in "${want_deps[@]}"; do
+  grep -qxF "$d" <<<"$dep_names" || fail "Depends lacks $d"
+done
+
+dpkg-deb -e "$deb" "$work/control"
+grep -qx /etc/default/cuetrack "$work/control/conffiles" || fail "/etc/default/cuetrack is not a conffile"
+[ -x "$work/control/postinst" ] || fail "postinst missing or not executable"
+
+dpkg-deb -x "$deb" "$work/root"
+r=$work/root
+want_files=(usr/bin/cuetrack usr/bin/cuetrack-listen usr/lib/systemd/system/cuetrack.service
+            etc/default/cuetrack usr/share/cuetrack/protocol/cuetrack_proto.h
+            usr/share/cuetrack/protocol/cuetrack_proto.c usr/share/doc/cuetrack/copyright
+            usr/share/doc/cuetrack/serial-protocol.md)
+[ "$freenect" = ON ] && want_files+=(usr/bin/cuetrack-record usr/lib/udev/rules.d/51-cuetrack-kinect.rules)
+for f in "${want_files[@]}"; do
+  [ -e "$r/$f" ] || fail "package lacks /$f"
+done
+# The unit starts the installed path; no build-tree path leaked into any text file.
+grep -q '^ExecStart=/usr/bin/cuetrack ' "$r/usr/lib/systemd/system/cuetrack.service" ||
+  fail "the service does not start /usr/bin/cuetrack"
+if grep -rlI -- "$build" "$r" >/dev/null; then fail "a packaged file names the build folder"; fi
+# systemd's own check of the unit (every key known, in its section), where systemd is.
+if command -v systemd-analyze >/dev/null; then
+  sed "s|^ExecStart=/usr/bin/cuetrack |ExecStart=$r/usr/bin/cuetrack |" \
+    "$r/usr/lib/systemd/system/cuetrack.service" >"$work/cuetrack.service"
+  verify=$(systemd-analyze verify "$work/cuetrack.service" 2>&1) || fail "systemd-analyze: $verify"
+  [ -z "$verify" ] || fail "systemd-analyze: $verify"
+else
+  echo "systemd-analyze not found: the unit's keys are not checked"
+fi
+
+# The packaged program tracks (the embedded synthetic scene).
+out=$("${emu[@]}" "$r/usr/bin/cuetrack" --frames 3 --quiet) || fail "packaged cuetrack failed ($?)"
+[ "$(grep -c '^track seq=' <<<"$out")" -eq 3 ] || fail "packaged cuetrack printed: $out"
+
+# The service's command line, expanded as systemd does from the packaged settings
+# (${X} one word, $X split at spaces), must be accepted: without a Kinect it ends with
+# exit 2 and the one-line Kinect message, never 1 (a bad command line).
+line=$(sed -n 's/^ExecStart=//p' "$r/usr/lib/systemd/system/cuetrack.service")
+while IFS='=' read -r k v; do
+  [[ "$k" =~ ^[A-Z_]+$ ]] || continue
+  line=${line//"\${$k}"/$v}
+  line=${line//"\$$k"/$v}
+done < <(grep -E '^[A-Z_]+=' "$r/etc/default/cuetrack")
+[[ "$line" != *'$'* ]] || fail "unexpanded setting in: $line"
+read -ra args <<<"$line"
+args[0]=$r/usr/bin/cuetrack
+echo "service command: ${args[*]}"
+rc=0
+err=$("${emu[@]}" "${args[@]}" --frames 1 2>&1 >/dev/null) || rc=$?
+echo "exit $rc: $err"
+[ "$rc" -ne 1 ] || fail "the service's command line is refused: $err"
+[ "$rc" -lt 128 ] || fail "the service's command line crashed cuetrack (exit $rc)"
+if [ "$freenect" = ON ] && [ "$rc" -eq 2 ]; then
+  grep -q 'Kinect' <<<"$err" || fail "exit 2 without naming the Kinect: $err"
+fi
+echo "check_deb: ok"
