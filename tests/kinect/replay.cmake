@@ -78,7 +78,7 @@ kinect_replay_test(kinect_replay_depth_only "[depth-only]" ${_rec}/moving)
 kinect_replay_test(kinect_replay_colour_only "[colour-only]" ${_rec}/moving)
 kinect_replay_test(kinect_replay_misuse "[misuse]" ${_rec}/moving)
 
-set(_expect ${CMAKE_CURRENT_SOURCE_DIR}/run_expect.cmake)
+set(_expect ${CUETRACK_RUN_EXPECT})
 function(kinect_record_test name run rc)
   list(JOIN run "|" _cmd)
   add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} "-DCMD=${_cmd}" -DEXPECT_RC=${rc} ${ARGN} -P ${_expect})
