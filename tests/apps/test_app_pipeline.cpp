@@ -391,8 +391,8 @@ TEST_CASE("garbage, corrupt and malformed inbound frames are answered with ERROR
   CHECK(rig.pipeline.commands().accepted() == 1);
 }
 
-TEST_CASE("SET_RATE thins the serial stream but not the other outputs") {
-  static Rig rig(31, true);
+TEST_CASE("SET_RATE thins the serial stream but not the other outputs; 0 restores every frame") {
+  static Rig rig(61, true);
   ctp_command_t rate = command(CTP_CMD_SET_RATE, 5);
   rate.rate_hz = 10;  // 30 fps frames -> every 3rd
   rig.host.send(rate);
@@ -401,10 +401,14 @@ TEST_CASE("SET_RATE thins the serial stream but not the other outputs") {
   CHECK(countType(msgs, CTP_MSG_ACK) == 1);
   CHECK(countType(msgs, CTP_MSG_TRACK) == 11);  // frames 0, 3, ..., 30
   CHECK(rig.sink.size() == 31);
-  rate.rate_hz = 0;
+  rate.rate_hz = 0;  // "every frame" (serial-protocol.md, SET_RATE)
+  rate.id = 6;
   rig.host.send(rate);
-  static Rig again(0, true);
-  (void)again;
+  for (int i = 0; i < 30; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  const auto after = rig.host.drain();
+  CHECK(countType(after, CTP_MSG_ACK) == 1);
+  CHECK(countType(after, CTP_MSG_TRACK) == 30);  // frames 31..60, none thinned
+  CHECK(rig.sink.size() == 61);
 }
 
 TEST_CASE("a heartbeat goes out after 1 s without any message") {

@@ -121,12 +121,32 @@ class Parser {
     if (lit("null")) return v->kind = Value::Null, true;
     if (lit("true")) return v->kind = Value::Bool, v->b = true, true;
     if (lit("false")) return v->kind = Value::Bool, v->b = false, true;
-    const char* start = _t.c_str() + _i;
-    char* end = nullptr;
-    v->n = std::strtod(start, &end);
-    if (end == start) return false;
+    // JSON's number grammar first (strtod alone takes nan, inf, hex and a leading +):
+    // -? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?
+    const size_t from = _i;
+    size_t j = _i;
+    auto digits = [&] {
+      const size_t d = j;
+      while (j < _t.size() && _t[j] >= '0' && _t[j] <= '9') ++j;
+      return j > d;
+    };
+    if (j < _t.size() && _t[j] == '-') ++j;
+    if (j < _t.size() && _t[j] == '0')
+      ++j;
+    else if (!digits())
+      return false;
+    if (j < _t.size() && _t[j] == '.') {
+      ++j;
+      if (!digits()) return false;
+    }
+    if (j < _t.size() && (_t[j] == 'e' || _t[j] == 'E')) {
+      ++j;
+      if (j < _t.size() && (_t[j] == '+' || _t[j] == '-')) ++j;
+      if (!digits()) return false;
+    }
+    v->n = std::strtod(_t.substr(from, j - from).c_str(), nullptr);
     v->kind = Value::Number;
-    _i += static_cast<size_t>(end - start);
+    _i = j;
     return true;
   }
   const std::string& _t;

@@ -29,8 +29,8 @@ EntryResult makeEntry(const std::string& tracker, const std::string& config, boo
   a.figures.hit = 100;
   a.figures.pascal = 95.5;
   a.figures.centerPx = 4.25;
-  a.figures.centerMm = 12.5;
-  a.figures.centerZMm = 3.25;
+  a.figures.centerMm = 12.46;  // written with one decimal: 12.5
+  a.figures.centerZMm = 3.27;  // 3.3
   a.figures.msMedian = 1.5;
   a.figures.msMean = 2.0;
   a.figures.allocs = 0;
@@ -86,8 +86,10 @@ TEST_CASE("one tracker: the file holds that object, with the schema's keys in or
   const minijson::Value& s1 = v.get("sequences")->items[1];
   CHECK(s1.get("name")->s == "seq \"two\"");
   CHECK(s1.get("center_px")->kind == minijson::Value::Null);
+  // Millimetres with one decimal (docs/bench-json.md): rounded, not cut or left long.
+  CHECK(text.find("\"center_mm\": 12.5, \"center_z_mm\": 3.3,") != std::string::npos);
   CHECK(s0.get("center_mm")->n == Approx(12.5));
-  CHECK(s0.get("center_z_mm")->n == Approx(3.2).margin(0.051));  // one decimal
+  CHECK(s0.get("center_z_mm")->n == Approx(3.3));
   CHECK(s1.get("center_mm")->kind == minijson::Value::Null);
   CHECK(s1.get("center_z_mm")->kind == minijson::Value::Null);
   // Average: the macro mean of the sequences (80 and 60), centre over the one that has it.
@@ -131,4 +133,23 @@ TEST_CASE("writeJson writes the file and reports an unwritable path in one line"
   CHECK_FALSE(writeJson("/nonexistent-dir/x.json", {makeEntry("cuetrack", "1.1", true)}, &err));
   CHECK(err.find("/nonexistent-dir/x.json") != std::string::npos);
   CHECK(err.find('\n') == std::string::npos);
+}
+
+TEST_CASE("the test's JSON reader holds numbers to JSON's grammar") {
+  // Its strictness is what lets the schema checks above reject what a JSON parser would.
+  for (const char* good : {"[0]", "[-0.5e3]", "[12.25]", "[1E+2]", "[-7]"}) {
+    INFO(good);
+    minijson::Value g;
+    CHECK(minijson::parse(good, &g));
+  }
+  minijson::Value w;
+  REQUIRE(minijson::parse("[-0.5e3]", &w));
+  REQUIRE(w.items.size() == 1);
+  CHECK(w.items[0].n == Approx(-500));
+  for (const char* bad :
+       {"[nan]", "[inf]", "[+1]", "[0x10]", "[01]", "[1.]", "[.5]", "[1e]", "[-]"}) {
+    INFO(bad);
+    minijson::Value b;
+    CHECK_FALSE(minijson::parse(bad, &b));
+  }
 }

@@ -89,6 +89,11 @@ BoxError boxError(const std::string& avi, const TrackerConfig& cfg, uint64_t see
 
 }  // namespace
 
+TEST_CASE("the allocation counter sees allocations in this program (positive control)", "[alloc]") {
+  // The zero-allocation checks of this program mean something only if this is not 0.
+  CHECK(test::controlAllocations() >= 1);
+}
+
 TEST_CASE("in 2D, corner-anchored negatives and the template anchor hold a still target's box",
           "[core][e2e][shared]") {
   // BoBoT H: the panda and the camera stand still (one ground-truth box for all frames).

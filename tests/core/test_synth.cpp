@@ -92,6 +92,11 @@ bool sanitized() {
   return std::getenv("CUETRACK_SANITIZED") != nullptr;  // ASan/UBSan: fewer seeds
 }
 
+TEST_CASE("the allocation counter sees allocations in this program (positive control)", "[alloc]") {
+  // The zero-allocation checks of this program mean something only if this is not 0.
+  CHECK(test::controlAllocations() >= 1);
+}
+
 TEST_CASE("every preset tracks the synthetic moving target", "[core][e2e]") {
   for (int i = 0; i < kNumPresets; ++i) {
     const Preset p = static_cast<Preset>(i);
@@ -181,9 +186,6 @@ TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2
     INFO("preset " << presetName(p) << ": " << kept << " of " << seeds << " seeds kept");
     CHECK(kept >= static_cast<int>(seeds) - 1);
   }
-  // For the record (the paper's point): the 2D grayscale preset may lose it.
-  const Stats g = runScene("twin-crossing", Preset::Test2_5, 5, 150);
-  WARN("preset 2.5 on twin-crossing: hit rate " << g.hitRate());
 }
 
 TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core][e2e]") {
@@ -206,12 +208,16 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
   }
   INFO("mean hit rate after frame " << kAfter << ": " << sum / 5.f);
   CHECK(sum / 5.f >= 0.8f);
+  // Control: the same seeds without lost detection (and so without re-acquisition).
   TrackerConfig noLost = presetConfig(Preset::Best);
   noLost.lostDetection = false;
-  const Stats n = runScene("occlusion", noLost, 1, 150, kAfter);
-  WARN("best without lost detection, after frame "
-       << kAfter << ": hit rate "
-       << static_cast<float>(n.hitsAfter) / static_cast<float>(n.framesAfter));
+  float sumNoLost = 0.f;
+  for (uint64_t seed = 1; seed <= 5; ++seed) {
+    const Stats n = runScene("occlusion", noLost, seed, 150, kAfter);
+    sumNoLost += static_cast<float>(n.hitsAfter) / static_cast<float>(n.framesAfter);
+  }
+  INFO("without lost detection, mean hit rate after frame " << kAfter << ": " << sumNoLost / 5.f);
+  CHECK(sumNoLost / 5.f <= 0.5f);
 }
 
 TEST_CASE("climbing the best search windows finds the reappeared target sooner", "[core][e2e]") {

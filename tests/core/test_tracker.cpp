@@ -60,6 +60,11 @@ RunStats run(const TrackerConfig& cfg, uint64_t seed, int frames, bool depth) {
 }
 }  // namespace
 
+TEST_CASE("the allocation counter sees allocations in this program (positive control)", "[alloc]") {
+  // The zero-allocation checks of this program mean something only if this is not 0.
+  CHECK(test::controlAllocations() >= 1);
+}
+
 TEST_CASE("preset names round-trip and configure the paper's tests", "[core][presets]") {
   for (int i = 0; i < kNumPresets; ++i) {
     Preset p;

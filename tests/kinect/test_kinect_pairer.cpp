@@ -156,6 +156,20 @@ TEST_CASE("pairer: a stop request wakes a waiting producer and consumer", "[kine
   CHECK(t.end == EndKind::Stopped);
 }
 
+TEST_CASE("pairer: a stop request ends a consumer already waiting for a pair", "[kinect][pairer]") {
+  static Pairer p;
+  p.reset(both(DropPolicy::Lossless));
+  static Taken t;
+  std::thread consumer([] { t = p.take(60000); });  // nothing will come
+  // The stop must come while take() waits, or it would prove nothing.
+  while (p.counters().consumerWaits == 0) std::this_thread::yield();
+  p.requestStop();
+  consumer.join();
+  CHECK(t.status == Taken::Status::End);  // not Timeout after 60 s
+  CHECK(t.end == EndKind::Stopped);
+  CHECK(p.counters().consumerWaits == 1);
+}
+
 TEST_CASE("pairer: a finished stream delivers its last pair, then End; nothing gives Timeout",
           "[kinect][pairer]") {
   static Pairer p;

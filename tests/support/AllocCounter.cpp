@@ -29,6 +29,14 @@ uint64_t deallocationCount() {
 uint64_t threadAllocationCount() {
   return tAllocs;
 }
+uint64_t controlAllocations() {
+  const AllocScope scope;
+  int* volatile p = new int(3);  // volatile: the pair must not be optimised away
+  delete p;
+  void* volatile q = std::malloc(16);
+  std::free(q);
+  return scope.allocations();
+}
 }  // namespace cuetrack::test
 
 #if defined(__SANITIZE_ADDRESS__)

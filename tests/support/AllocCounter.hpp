@@ -17,6 +17,12 @@ uint64_t deallocationCount();
 // thread allocates for itself). Same hooks as allocationCount().
 uint64_t threadAllocationCount();
 
+class AllocScope;
+// The positive control for a test program that asserts zero allocations: one new and
+// one malloc; returns what this program's counter saw of them (2; 1 under ASan, which
+// keeps malloc to itself; 0 if the hooks are not in effect).
+uint64_t controlAllocations();
+
 class AllocScope {
  public:
   AllocScope() : _start(allocationCount()) {}

@@ -179,6 +179,7 @@ Taken Pairer::take(uint32_t timeoutMs) {
   std::unique_lock<std::mutex> lock(_mutex);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
   Taken out;
+  bool waited = false;
   for (;;) {
     if (stopRequested()) {
       out.status = Taken::Status::End;
@@ -207,6 +208,8 @@ Taken Pairer::take(uint32_t timeoutMs) {
       out.status = Taken::Status::Timeout;
       return out;
     }
+    if (!waited) ++_counters.consumerWaits;
+    waited = true;
     const auto poll = now + std::chrono::milliseconds(kPollMs);
     _changed.wait_until(lock, poll < deadline ? poll : deadline);
   }

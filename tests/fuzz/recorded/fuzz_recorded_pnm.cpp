@@ -15,9 +15,12 @@ uint16_t gDepth[kMaxPixels];
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   char err[160];
+  std::memset(err, 'X', sizeof err);  // a stale zero byte must not pass for a message
   rec::PnmHeader h;
   if (!rec::parsePnmHeader(data, size, &h, err, sizeof err)) {
-    if (std::memchr(err, '\0', sizeof err) == nullptr) __builtin_trap();  // always terminated
+    // A refusal always says why: a non-empty, terminated message.
+    if (err[0] == '\0' || err[0] == 'X' || std::memchr(err, '\0', sizeof err) == nullptr)
+      __builtin_trap();
     return 0;
   }
   if (h.width < 1 || h.height < 1 || h.width > kMaxImageWidth || h.height > kMaxImageHeight)

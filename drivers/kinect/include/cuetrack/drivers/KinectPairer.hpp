@@ -55,6 +55,7 @@ struct PairerCounters {
   uint64_t dropped = 0;        // complete pairs overwritten before the consumer took them
   uint64_t unpaired = 0;       // frames discarded without a partner within the tolerance
   uint64_t skippedByRate = 0;  // pairs skipped by rateDivisor
+  uint64_t consumerWaits = 0;  // take() calls that found nothing and waited (ahead of the camera)
 };
 
 // What take() hands the consumer.
