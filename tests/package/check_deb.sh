@@ -34,7 +34,10 @@ done
 
 dpkg-deb -e "$deb" "$work/control"
 grep -qx /etc/default/cuetrack "$work/control/conffiles" || fail "/etc/default/cuetrack is not a conffile"
-[ -x "$work/control/postinst" ] || fail "postinst missing or not executable"
+for script in preinst postinst prerm postrm; do
+  [ -x "$work/control/$script" ] || fail "$script missing or not executable"
+  sh -n "$work/control/$script" || fail "$script is not valid sh"
+done
 
 dpkg-deb -x "$deb" "$work/root"
 r=$work/root
@@ -64,17 +67,36 @@ fi
 out=$("${emu[@]}" "$r/usr/bin/cuetrack" --frames 3 --quiet) || fail "packaged cuetrack failed ($?)"
 [ "$(grep -c '^track seq=' <<<"$out")" -eq 3 ] || fail "packaged cuetrack printed: $out"
 
-# The service's command line, expanded as systemd does from the packaged settings
-# (${X} one word, $X split at spaces), must be accepted: without a Kinect it ends with
-# exit 2 and the one-line Kinect message, never 1 (a bad command line).
-line=$(sed -n 's/^ExecStart=//p' "$r/usr/lib/systemd/system/cuetrack.service")
-while IFS='=' read -r k v; do
-  [[ "$k" =~ ^[A-Z_]+$ ]] || continue
-  line=${line//"\${$k}"/$v}
-  line=${line//"\$$k"/$v}
+# The service's command line, expanded as systemd does from the packaged settings: the
+# line is split at spaces first; then a word that is ${X} becomes exactly one argument
+# (empty if X is), a word that is $X becomes X's words (none if X is empty). Without a
+# Kinect it must end with exit 2 and the one-line Kinect message, never 1 (refused).
+declare -A setting=()
+while IFS= read -r kv; do
+  k=${kv%%=*} v=${kv#*=}
+  v=${v#\"} v=${v%\"}  # EnvironmentFile strips one pair of double quotes
+  setting[$k]=$v
 done < <(grep -E '^[A-Z_]+=' "$r/etc/default/cuetrack")
-[[ "$line" != *'$'* ]] || fail "unexpanded setting in: $line"
-read -ra args <<<"$line"
+read -ra words <<<"$(sed -n 's/^ExecStart=//p' "$r/usr/lib/systemd/system/cuetrack.service")"
+args=()
+for w in "${words[@]}"; do
+  if [[ "$w" =~ ^\$\{([A-Z_]+)\}$ ]]; then
+    k=${BASH_REMATCH[1]}
+    [ -n "${setting[$k]+set}" ] || fail "the unit uses \${$k}, which the settings file lacks"
+    args+=("${setting[$k]}")
+  elif [[ "$w" =~ ^\$([A-Z_]+)$ ]]; then
+    k=${BASH_REMATCH[1]}
+    [ -n "${setting[$k]+set}" ] || fail "the unit uses \$$k, which the settings file lacks"
+    read -ra split <<<"${setting[$k]}"
+    args+=("${split[@]}")
+  else
+    [[ "$w" != *'$'* ]] || fail "unexpanded word in ExecStart: $w"
+    args+=("$w")
+  fi
+done
+for k in "${!setting[@]}"; do
+  [ "$k" = CUETRACK_EXTRA_ARGS ] || [ -n "${setting[$k]}" ] || fail "setting $k is empty"
+done
 args[0]=$r/usr/bin/cuetrack
 echo "service command: ${args[*]}"
 rc=0
