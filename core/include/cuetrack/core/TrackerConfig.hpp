@@ -72,7 +72,7 @@ struct TrackerConfig {
       0.2f;                          // > 0: some near negatives are the estimate shifted by this
   float positionNoise2d = 0.09f;     // 2D motion noise per frame, x sqrt(w h)
   float scaleNoise2d = 0.015f;       // 2D std of ln(scale) per frame
-  float aspectNoise2d = 0.004f;      // 2D std of ln(w/h) per frame
+  float aspectNoise2d = 0.004f;      // 2D: ln w += a, ln h -= a, a ~ N(0, this²) per frame
   int jumpEvery = 10;                // fastMotion: one particle in this many jumps ...
   float jumpScale = 3.f;             // ... by this many times the position noise
   float jumpMinDtS = 0.045f;         // ... in 3D only with frames further apart (30 fps: none)
