@@ -169,7 +169,7 @@ size_t ctp_encode_heartbeat(const ctp_heartbeat_t* m, uint8_t* out, size_t cap) 
   put32(p, m->seq);
   put64(p + 4, m->time_us);
   p[12] = m->state;
-  p[13] = 0;
+  p[13] = m->flags;
   put32(p + 14, m->frames);
   put32(p + 18, m->rx_errors);
   return ctp_encode_frame(CTP_MSG_HEARTBEAT, p, sizeof p, out, cap);
@@ -245,6 +245,7 @@ int ctp_parse_message(const ctp_frame_t* f, ctp_message_t* out) {
       m->seq = get32(p);
       m->time_us = get64(p + 4);
       m->state = p[12];
+      m->flags = p[13];
       m->frames = get32(p + 14);
       m->rx_errors = get32(p + 18);
       return m->state > CTP_STATE_SEARCHING ? CTP_E_VALUE : CTP_OK;

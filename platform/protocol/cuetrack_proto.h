@@ -60,6 +60,8 @@ enum {
 /* TRACK flags. */
 #define CTP_FLAG_HAS_3D 0x01u  /* centre_mm valid */
 #define CTP_FLAG_LEARNED 0x02u /* the model was updated with this frame */
+/* HEARTBEAT flags */
+#define CTP_HB_NO_CAMERA 0x01u /* no camera yet: the device waits for one to be plugged in */
 
 /* Error codes: in ERROR replies and as negative parse results (-code). */
 enum {
@@ -89,6 +91,7 @@ typedef struct {
   uint32_t seq;
   uint64_t time_us;   /* device monotonic time [us] */
   uint8_t state;      /* CTP_STATE_* */
+  uint8_t flags;      /* CTP_HB_* */
   uint32_t frames;    /* frames processed since start */
   uint32_t rx_errors; /* inbound frames rejected since start */
 } ctp_heartbeat_t;

@@ -62,6 +62,22 @@ TEST_CASE("every option is read") {
   CHECK(o.realtime);
 }
 
+TEST_CASE("--wait-camera goes with a Kinect source only") {
+  AppOptions o;
+  std::string err;
+  REQUIRE(parse({"--source", "kinect:colour", "--wait-camera"}, &o, &err) == ParseResult::Run);
+  CHECK(o.waitCamera);
+  REQUIRE(parse({"--source", "kinect"}, &o, &err) == ParseResult::Run);
+  CHECK_FALSE(o.waitCamera);
+  // A file or a scene that is missing stays missing; the default may be a scene.
+  CHECK(parse({"--wait-camera"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--wait-camera needs --source kinect or kinect:colour");
+  CHECK(parse({"--source", "rec1", "--wait-camera"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--wait-camera needs --source kinect or kinect:colour");
+  CHECK(parse({"--wait-camera", "--source", "synth:moving"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--wait-camera needs --source kinect or kinect:colour");
+}
+
 TEST_CASE("bad command lines give one line naming the option") {
   AppOptions o;
   std::string err;

@@ -10,6 +10,7 @@
 #include "PacedSource.hpp"
 #include "Pipeline.hpp"
 #include "SerialLink.hpp"
+#include "WaitingSource.hpp"
 #include "cuetrack/platform/fake/FakeClock.hpp"
 #include "cuetrack/platform/fake/FakeSerial.hpp"
 #include "cuetrack/platform/fake/MemoryReporter.hpp"
@@ -680,4 +681,136 @@ TEST_CASE("--realtime: frames come at the recording's own times, the link served
   CHECK(gapPaced.next(slot) == ReadStatus::End);  // stopped 200 ms into the gap
   CHECK(hook.calls == 3);
   CHECK(clock.nowUs() == t0 + 33333 + 200000);
+}
+
+namespace {
+// A camera that is plugged in at a given time: the opener fails ("no Kinect found on USB",
+// then "no permission" once it is on the bus) until the clock reaches `plugInUs`.
+struct LateCamera {
+  FakeClock* clock = nullptr;
+  uint64_t busUs = 0, plugInUs = 0;
+  FrameSource* camera = nullptr;
+  int opens = 0;
+  void (*onOpen)(int attempt, void* ctx) = nullptr;  // the peer's doings meanwhile
+  void* onOpenCtx = nullptr;
+  static FrameSource* open(void* self, char* err, size_t n) {
+    LateCamera& c = *static_cast<LateCamera*>(self);
+    ++c.opens;
+    if (c.onOpen) c.onOpen(c.opens, c.onOpenCtx);
+    if (c.clock->nowUs() >= c.plugInUs) return c.camera;
+    std::snprintf(
+        err, n, "%s",
+        c.clock->nowUs() >= c.busUs ? "kinect#0: no permission" : "no Kinect found on USB");
+    return nullptr;
+  }
+};
+}  // namespace
+
+TEST_CASE("--wait-camera: a camera plugged in later is looked for every second, then used") {
+  FakeClock clock(1000);
+  FakeSleeper sleeper(clock);
+  MemoryReporter reporter;
+  TinySource tiny(3, false);
+  LateCamera late;
+  late.clock = &clock;
+  late.busUs = 1000 + 2000000;  // on the bus after 2 s, readable after 3.5 s
+  late.plugInUs = 1000 + 3500000;
+  late.camera = &tiny;
+  WaitingSource waiting(&LateCamera::open, &late, clock, sleeper, reporter);
+  CHECK_FALSE(waiting.tryOpen());
+  CHECK(waiting.awaitingDevice());
+  CHECK(std::string(waiting.error()) == "no Kinect found on USB");
+  static FrameSlot slot;
+  REQUIRE(waiting.next(slot) == ReadStatus::Ok);  // frames flow once it opens
+  CHECK_FALSE(waiting.awaitingDevice());
+  CHECK(late.opens == 5);  // at 0, 1, 2, 3 and 4 s
+  CHECK(clock.nowUs() == 1000 + 4000000);
+  CHECK(sleeper.calls == 40);  // in 100 ms slices
+  // One line per distinct reason, and one when it comes.
+  CHECK(reporter.count() == 3);
+  CHECK(reporter.countContaining("no Kinect found on USB; waiting for it (--wait-camera)") == 1);
+  CHECK(reporter.countContaining("kinect#0: no permission; waiting for it") == 1);
+  CHECK(reporter.countContaining("tiny: found after 5 attempts") == 1);
+  REQUIRE(waiting.next(slot) == ReadStatus::Ok);
+  REQUIRE(waiting.next(slot) == ReadStatus::Ok);
+  CHECK(waiting.next(slot) == ReadStatus::End);
+  CHECK(late.opens == 5);
+
+  // A camera that is there at once: no report, no wait.
+  TinySource there(1, false);
+  LateCamera now;
+  now.clock = &clock;
+  now.camera = &there;
+  MemoryReporter quiet;
+  WaitingSource direct(&LateCamera::open, &now, clock, sleeper, quiet);
+  REQUIRE(direct.next(slot) == ReadStatus::Ok);
+  CHECK(quiet.count() == 0);
+  CHECK(now.opens == 1);
+}
+
+TEST_CASE("--wait-camera with a serial link: flagged heartbeats, an early START, a STOP ends it") {
+  static FakeClock clock(1000);
+  static FakeSleeper sleeper(clock);
+  static MemoryReporter reporter;
+  static FakeSerialCable cable;
+  static SerialLink link(cable.a(), clock, reporter);
+  static Host host(cable.b());
+  static StubTracker tracker;
+  static FrameSlot slot;
+  static TinySource tiny(10, false);
+  static LateCamera late;
+  late.clock = &clock;
+  late.busUs = late.plugInUs = 1000 + 2500000;
+  late.camera = &tiny;
+  late.onOpen = [](int attempt, void* h) {  // the flight controller starts early
+    if (attempt == 2) static_cast<Host*>(h)->send(startCommand(70, 10, 12, 20, 16));
+  };
+  late.onOpenCtx = &host;
+  static WaitingSource waiting(&LateCamera::open, &late, clock, sleeper, reporter);
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  static Pipeline pipeline(waiting, slot, tracker, clock, reporter, o);
+  pipeline.attachLink(&link);
+  REQUIRE_FALSE(waiting.tryOpen());
+  REQUIRE(pipeline.step() == StepResult::Continue);  // waits 3 s, then the first frame
+  const auto msgs = host.drain();
+  // While it waited: a heartbeat a second (at 1, 2 and 3 s), each flagged no-camera.
+  REQUIRE(countType(msgs, CTP_MSG_HEARTBEAT) == 3);
+  for (const auto& m : msgs)
+    if (m.type == CTP_MSG_HEARTBEAT) {
+      CHECK((m.u.heartbeat.flags & CTP_HB_NO_CAMERA) != 0);
+      CHECK(m.u.heartbeat.state == CTP_STATE_IDLE);
+    }
+  // The START, sent before there was a camera, is answered and applied on the first frame.
+  CHECK(countType(msgs, CTP_MSG_ACK) == 1);
+  REQUIRE_FALSE(msgs.empty());
+  REQUIRE(msgs.back().type == CTP_MSG_TRACK);
+  CHECK(msgs.back().u.track.state == CTP_STATE_TRACKING);
+  CHECK(tracker.inits == 1);
+  // With the camera there, a silent second gives a heartbeat without the flag.
+  clock.advanceUs(1000001);
+  pipeline.serviceLink();
+  const auto later = host.drain();
+  REQUIRE(countType(later, CTP_MSG_HEARTBEAT) == 1);
+  CHECK(later[0].u.heartbeat.flags == 0);
+
+  // A STOP while no camera is there ends the wait and the run.
+  static TinySource never(1, false);
+  static LateCamera absent;
+  absent.clock = &clock;
+  absent.busUs = absent.plugInUs = UINT64_MAX;
+  absent.camera = &never;
+  absent.onOpen = [](int attempt, void* h) {
+    if (attempt == 3) static_cast<Host*>(h)->send(command(CTP_CMD_STOP, 71));
+  };
+  absent.onOpenCtx = &host;
+  static SerialLink link2(cable.a(), clock, reporter);
+  static WaitingSource waiting2(&LateCamera::open, &absent, clock, sleeper, reporter);
+  static Pipeline pipeline2(waiting2, slot, tracker, clock, reporter, o);
+  pipeline2.attachLink(&link2);
+  REQUIRE_FALSE(waiting2.tryOpen());
+  CHECK(pipeline2.step() == StepResult::Stopped);
+  const auto end = host.drain();
+  REQUIRE(countType(end, CTP_MSG_ACK) == 1);
+  CHECK(absent.opens == 3);
 }

@@ -7,6 +7,7 @@
 #include "Pipeline.hpp"
 #include "SerialLink.hpp"
 #include "Sources.hpp"
+#include "WaitingSource.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
@@ -46,12 +47,26 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     return kExitUsage;
   }
 
-  FrameSource* source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err);
-  if (!source) {
-    reporter.report(err);
-    return kExitSource;
-  }
   static platform::MonotonicSleeper sleeper;
+  FrameSource* source = nullptr;
+  if (opt.waitCamera) {
+    // The camera may come later: the run starts without it (outputs open, the serial
+    // link served), and next() looks for it every second.
+    static WaitingSource waiting(
+        [](void* ctx, char* e, size_t n) {
+          const AppOptions& o = *static_cast<const AppOptions*>(ctx);
+          return openSource(o.source, o.seed, o.frames, e, n);
+        },
+        &opt, clock, sleeper, reporter, &platform::stopRequested);
+    waiting.tryOpen();
+    source = &waiting;
+  } else {
+    source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err);
+    if (!source) {
+      reporter.report(err);
+      return kExitSource;
+    }
+  }
   static PacedSource paced(*source, clock, sleeper, &platform::stopRequested);
   if (opt.realtime) source = &paced;  // a live Kinect is paced by its own clock anyway
 

@@ -68,6 +68,9 @@ const char* usageText() {
          "  --frames N         stop after N frames (a synthetic scene then lasts N frames)\n"
          "  --realtime         play a recording or synthetic scene at its own frame rate (its\n"
          "                     timestamps), as the camera would; default: as fast as it tracks\n"
+         "  --wait-camera      with --source kinect: no Kinect plugged in yet is not an error;\n"
+         "                     look for one every second until it comes (with --serial,\n"
+         "                     HEARTBEATs flagged no-camera go out and commands are answered)\n"
          "  --config NAME      tracker preset: best (default), 1.1-1.4, 2.1-2.5\n"
          "  --seed N           random seed (default 1)\n"
          "  --quiet            no status line (fps, dropped frames, state) on stderr\n"
@@ -102,6 +105,8 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       out->quiet = true;
     } else if (std::strcmp(a, "--realtime") == 0) {
       out->realtime = true;
+    } else if (std::strcmp(a, "--wait-camera") == 0) {
+      out->waitCamera = true;
     } else if (std::strcmp(a, "--source") == 0) {
       if (!value(&v)) return ParseResult::Error;
       // kinect:MODE: the tracker needs colour, so both streams or colour alone.
@@ -164,6 +169,11 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       std::snprintf(err, errLen, "unknown option '%s' (see --help)", a);
       return ParseResult::Error;
     }
+  }
+  // Only a camera can appear later; a file or a scene that is missing stays missing.
+  if (out->waitCamera && (out->source == nullptr || std::strncmp(out->source, "kinect", 6) != 0)) {
+    std::snprintf(err, errLen, "--wait-camera needs --source kinect or kinect:colour");
+    return ParseResult::Error;
   }
   return ParseResult::Run;
 }

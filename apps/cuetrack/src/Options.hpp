@@ -30,7 +30,8 @@ struct AppOptions {
   const char* preset = "best";
   uint64_t seed = 1;
   bool quiet = false;
-  bool realtime = false;  // play recordings and scenes at their own frame rate
+  bool realtime = false;    // play recordings and scenes at their own frame rate
+  bool waitCamera = false;  // --source kinect: wait for one to be plugged in (WaitingSource)
 };
 
 enum class ParseResult : uint8_t { Run, Help, Error };

@@ -23,6 +23,7 @@ class PacedSource final : public FrameSource {
   int frameCount() const override { return _inner.frameCount(); }
   double nominalFps() const override { return _inner.nominalFps(); }
   int skippedFrames() const override { return _inner.skippedFrames(); }
+  bool awaitingDevice() const override { return _inner.awaitingDevice(); }
 
  private:
   FrameSource& _inner;

@@ -91,7 +91,8 @@ void Pipeline::serviceLink() {
     }
     if (n < 8) break;
   }
-  if (_link->heartbeatDue()) _link->sendHeartbeat(_state, _frames);
+  if (_link->heartbeatDue())
+    _link->sendHeartbeat(_state, _frames, _source.awaitingDevice() ? CTP_HB_NO_CAMERA : 0u);
 }
 
 bool Pipeline::startFromCommand(const Frame& frame, Box* initBox) {

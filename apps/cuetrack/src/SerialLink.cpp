@@ -143,11 +143,12 @@ bool SerialLink::heartbeatDue() const {
   return _connected && _clock.nowUs() - _lastTxUs >= kHeartbeatPeriodUs;
 }
 
-void SerialLink::sendHeartbeat(uint8_t state, uint32_t frames) {
+void SerialLink::sendHeartbeat(uint8_t state, uint32_t frames, uint8_t flags) {
   ctp_heartbeat_t h{};
   h.seq = nextSeq();
   h.time_us = _clock.nowUs();
   h.state = state;
+  h.flags = flags;
   h.frames = frames;
   h.rx_errors = _stats.rxErrors;
   uint8_t wire[CTP_MAX_WIRE];

@@ -48,7 +48,7 @@ class SerialLink {
   // TRACK, subject to the rate limit (by frame time). True when queued.
   bool sendTrack(ctp_track_t track);
   bool heartbeatDue() const;
-  void sendHeartbeat(uint8_t state, uint32_t frames);
+  void sendHeartbeat(uint8_t state, uint32_t frames, uint8_t flags = 0);  // flags: CTP_HB_*
   void sendAck(uint8_t cmdType, uint16_t cmdId);
   void sendError(uint8_t cmdType, uint16_t cmdId, uint8_t code);
   void noteRejected() { ++_stats.rxErrors; }  // a frame decoded but malformed as a command

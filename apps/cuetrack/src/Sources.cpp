@@ -32,6 +32,8 @@ FrameSource* openSynth(const char* scene, uint64_t seed, int frames, char* err, 
 }
 
 #if defined(CUETRACK_HAVE_KINECT)
+bool gKinectOpened = false;  // the source, however wrapped (--wait-camera), is the Kinect
+
 KinectSource& kinect() {
   static KinectSource source;  // ~4.6 MiB of frame buffers
   return source;
@@ -45,6 +47,7 @@ FrameSource* openKinect(KinectStreams streams, char* err, size_t errLen) {
     std::snprintf(err, errLen, "%s", kinect().error());
     return nullptr;
   }
+  gKinectOpened = true;
   return &kinect();
 }
 #endif
@@ -108,7 +111,7 @@ void describeGroundTruth(const char* spec, char* out, size_t outLen) {
 uint64_t droppedFrames(const FrameSource& source) {
   uint64_t n = static_cast<uint64_t>(source.skippedFrames());
 #if defined(CUETRACK_HAVE_KINECT)
-  if (&source == &kinect()) n += kinect().stats().dropped;
+  if (gKinectOpened) n += kinect().stats().dropped;
 #endif
   return n;
 }

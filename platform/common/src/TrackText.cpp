@@ -104,11 +104,13 @@ size_t formatMessageLine(const ctp_message_t& m, char* buf, size_t cap) {
     case CTP_MSG_TRACK:
       return formatTrackLine(m.u.track, buf, cap);
     case CTP_MSG_HEARTBEAT:
-      n = std::snprintf(
-          buf, cap,
-          "heartbeat seq=%" PRIu32 " t=%" PRIu64 "us %s frames=%" PRIu32 " rx_errors=%" PRIu32 "\n",
-          m.u.heartbeat.seq, m.u.heartbeat.time_us, ctp_state_name(m.u.heartbeat.state),
-          m.u.heartbeat.frames, m.u.heartbeat.rx_errors);
+      n = std::snprintf(buf, cap,
+                        "heartbeat seq=%" PRIu32 " t=%" PRIu64 "us %s frames=%" PRIu32
+                        " rx_errors=%" PRIu32 "%s\n",
+                        m.u.heartbeat.seq, m.u.heartbeat.time_us,
+                        ctp_state_name(m.u.heartbeat.state), m.u.heartbeat.frames,
+                        m.u.heartbeat.rx_errors,
+                        (m.u.heartbeat.flags & CTP_HB_NO_CAMERA) != 0 ? " no-camera" : "");
       break;
     case CTP_MSG_ACK:
       n = std::snprintf(buf, cap, "ack seq=%" PRIu32 " %s id=%u\n", m.u.ack.seq,

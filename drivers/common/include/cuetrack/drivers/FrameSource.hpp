@@ -59,6 +59,9 @@ class FrameSource {
   virtual double nominalFps() const { return 0.0; }
   // Frames skipped as unreadable so far (with the skip-bad-frames option).
   virtual int skippedFrames() const { return 0; }
+  // True while no frame can come because the device is not there yet (a source that
+  // waits for its camera to be plugged in); callers may tell their peers so.
+  virtual bool awaitingDevice() const { return false; }
 
   // A source that can wait long for a frame (the live Kinect: up to its stall timeout)
   // calls `hook(ctx)` about every kIdleSliceMs while it waits, on the thread that called
