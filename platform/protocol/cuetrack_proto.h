@@ -91,9 +91,9 @@ typedef struct {
   uint32_t seq;
   uint64_t time_us;   /* device monotonic time [us] */
   uint8_t state;      /* CTP_STATE_* */
-  uint8_t flags;      /* CTP_HB_* */
   uint32_t frames;    /* frames processed since start */
   uint32_t rx_errors; /* inbound frames rejected since start */
+  uint8_t flags;      /* CTP_HB_* (last: older code initialising in order stays right) */
 } ctp_heartbeat_t;
 
 typedef struct {

@@ -76,6 +76,7 @@ TEST_CASE("--wait-camera goes with a Kinect source only") {
   CHECK(err == "--wait-camera needs --source kinect or kinect:colour");
   CHECK(parse({"--wait-camera", "--source", "synth:moving"}, &o, &err) == ParseResult::Error);
   CHECK(err == "--wait-camera needs --source kinect or kinect:colour");
+  CHECK(parse({"--source", "kinect_lab_rec", "--wait-camera"}, &o, &err) == ParseResult::Error);
 }
 
 TEST_CASE("bad command lines give one line naming the option") {

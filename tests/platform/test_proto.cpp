@@ -97,7 +97,7 @@ TEST_CASE("every message type survives encode -> decode -> parse") {
     REQUIRE(sameTrack(m.u.track, t));
   }
   SECTION("heartbeat, ack, error") {
-    ctp_heartbeat_t h{9, 123456789ull, CTP_STATE_SEARCHING, CTP_HB_NO_CAMERA, 77, 3};
+    ctp_heartbeat_t h{9, 123456789ull, CTP_STATE_SEARCHING, 77, 3, CTP_HB_NO_CAMERA};
     ctp_ack_t a{10, CTP_CMD_START, 0xBEEF};
     ctp_error_t e{11, CTP_CMD_SET_RATE, 513, CTP_E_VALUE};
     std::vector<uint8_t> stream;

@@ -37,6 +37,10 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report(err);
     return kExitUsage;
   }
+  if (opt.waitCamera && !kinectSupported()) {  // it would wait for ever
+    reporter.report("--wait-camera: this build has no Kinect driver (libfreenect missing)");
+    return kExitUsage;
+  }
   platform::installStopSignals();
 
   static platform::MonotonicClock clock;

@@ -171,7 +171,9 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
     }
   }
   // Only a camera can appear later; a file or a scene that is missing stays missing.
-  if (out->waitCamera && (out->source == nullptr || std::strncmp(out->source, "kinect", 6) != 0)) {
+  if (out->waitCamera &&
+      (out->source == nullptr ||
+       (std::strcmp(out->source, "kinect") != 0 && std::strncmp(out->source, "kinect:", 7) != 0))) {
     std::snprintf(err, errLen, "--wait-camera needs --source kinect or kinect:colour");
     return ParseResult::Error;
   }

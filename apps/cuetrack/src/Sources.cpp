@@ -86,6 +86,14 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   return recorded.get();
 }
 
+bool kinectSupported() {
+#if defined(CUETRACK_HAVE_KINECT)
+  return true;
+#else
+  return false;
+#endif
+}
+
 void describeGroundTruth(const char* spec, char* out, size_t outLen) {
   if (!spec || std::strncmp(spec, "kinect", 6) == 0 || std::strncmp(spec, "synth", 5) == 0 ||
       std::strncmp(spec, "pan:", 4) == 0) {

@@ -15,6 +15,9 @@ namespace cuetrack::app {
 // err on failure.
 FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen);
 
+// This build has the Kinect driver (libfreenect): a Kinect can be opened, now or later.
+bool kinectSupported();
+
 // Where the ground truth of source `spec` comes from, for messages: the file its reader
 // takes (drivers/recorded/.../OpenSource.hpp), e.g. "rec/groundtruth.txt", or the
 // spec itself for generated sources ("synth:moving ground truth").

@@ -3,7 +3,9 @@
 // from the board (HEARTBEATs flagged no-camera) and can already send its START.
 // Until its opener succeeds, next() looks again every kRetryUs and calls its caller's
 // idle hook every FrameSource::kIdleSliceMs meanwhile, like the Kinect during a stall;
-// then it is its camera's source, unchanged.
+// then it is its camera's source, unchanged. An attempt itself is not sliced: a missing
+// Kinect is known in milliseconds, but a camera that answers slowly delays the
+// heartbeats by as long as its open() takes.
 #pragma once
 
 #include <cstddef>
