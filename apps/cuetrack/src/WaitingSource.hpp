@@ -45,8 +45,6 @@ class WaitingSource final : public FrameSource {
   int skippedFrames() const override { return _inner ? _inner->skippedFrames() : 0; }
   bool awaitingDevice() const override { return _inner == nullptr; }
 
-  int attempts() const { return _attempts; }
-
  private:
   Opener _open;
   void* _ctx;
