@@ -15,6 +15,7 @@
 #include "cuetrack/platform/fake/FakeSerial.hpp"
 #include "cuetrack/platform/fake/MemoryReporter.hpp"
 #include "cuetrack/platform/fake/MemorySink.hpp"
+#include "fc_link.h"
 
 using namespace cuetrack;
 using namespace cuetrack::app;
@@ -111,11 +112,17 @@ class StubTracker final : public TrackerPort {
     r.state = lost ? TrackState::Lost : TrackState::Tracking;
     r.box = _box;
     r.confidence = 0.75f;
+    if (with3d) {  // a centre 2 m ahead that moves with the box
+      r.hasPosition3d = true;
+      r.positionMm[0] = 10.f * _box.x;
+      r.positionMm[2] = 2000.f;
+    }
     return r;
   }
   void reset() override { ++resets; }
   int inits = 0, updates = 0, resets = 0;
   bool lost = false;
+  bool with3d = false;
 
  private:
   Box _box{};
@@ -813,4 +820,50 @@ TEST_CASE("--wait-camera with a serial link: flagged heartbeats, an early START,
   const auto end = host.drain();
   REQUIRE(countType(end, CTP_MSG_ACK) == 1);
   CHECK(absent.opens == 3);
+}
+
+TEST_CASE("the flight controller's example, on the other end of the cable, steers by the tracks") {
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  static Rig rig(40, false, o);
+  rig.tracker.with3d = true;
+  static fc_link_t fc;
+  fc_link_init(&fc);
+  // The controller's loop: read what came (the clock in ms), then act.
+  auto pump = [] {
+    const uint32_t nowMs = static_cast<uint32_t>(rig.clock.nowUs() / 1000u);
+    uint8_t buf[256];
+    for (;;) {
+      const IoResult r = rig.host.stream.read(buf, sizeof buf, 0);
+      if (r.bytes == 0) break;
+      for (size_t i = 0; i < r.bytes; ++i) fc_link_on_byte(&fc, buf[i], nowMs);
+    }
+    return nowMs;
+  };
+  int32_t c[3];
+  REQUIRE(rig.step() == StepResult::Continue);  // idle: no target yet
+  uint32_t now = pump();
+  CHECK(fc_link_alive(&fc, now));
+  CHECK_FALSE(fc_link_target(&fc, now, c));
+  uint8_t w[CTP_MAX_WIRE];
+  const size_t n = fc_link_start(&fc, 10, 12, 20, 16, w, sizeof w);
+  REQUIRE(rig.host.stream.write(w, n).bytes == n);
+  for (int i = 0; i < 10; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  now = pump();
+  CHECK(fc.acks == 1);
+  REQUIRE(fc_link_target(&fc, now, c));
+  CHECK(c[2] == 2000);
+  CHECK(c[0] == static_cast<int32_t>(10.f * (10.f + 9.f)));  // the 10th frame's box x
+  CHECK(fc.lost == 0);
+  rig.tracker.lost = true;  // the tracker loses it: no more steering
+  REQUIRE(rig.step() == StepResult::Continue);
+  now = pump();
+  CHECK_FALSE(fc_link_target(&fc, now, c));
+  // STOP from the controller: acknowledged, the run ends.
+  const size_t m = fc_link_stop(&fc, w, sizeof w);
+  REQUIRE(rig.host.stream.write(w, m).bytes == m);
+  CHECK(rig.step() == StepResult::Stopped);
+  pump();
+  CHECK(fc.acks == 2);
+  CHECK(fc.errors == 0);
 }

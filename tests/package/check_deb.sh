@@ -43,7 +43,9 @@ dpkg-deb -x "$deb" "$work/root"
 r=$work/root
 want_files=(usr/bin/cuetrack usr/bin/cuetrack-listen usr/lib/systemd/system/cuetrack.service
             etc/default/cuetrack usr/share/cuetrack/protocol/cuetrack_proto.h
-            usr/share/cuetrack/protocol/cuetrack_proto.c usr/share/doc/cuetrack/copyright
+            usr/share/cuetrack/protocol/cuetrack_proto.c
+            usr/share/cuetrack/protocol/example/fc_link.h
+            usr/share/cuetrack/protocol/example/fc_link.c usr/share/doc/cuetrack/copyright
             usr/share/doc/cuetrack/serial-protocol.md)
 [ "$freenect" = ON ] && want_files+=(usr/bin/cuetrack-record usr/lib/udev/rules.d/51-cuetrack-kinect.rules)
 for f in "${want_files[@]}"; do
