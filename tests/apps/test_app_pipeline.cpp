@@ -201,6 +201,18 @@ struct Rig {
     clock.advanceUs(33333);
     return pipeline.step();
   }
+  // Before frame `frame` the camera delivers nothing for `slices` idle slices of 100 ms;
+  // the host sends `c` 0.5 s into that silence.
+  void stallThenSend(int frame, int slices, const ctp_command_t& c) {
+    midStall = c;
+    source.stallAt(
+        frame, slices, &clock,
+        [](int slice, void* self) {
+          Rig& r = *static_cast<Rig*>(self);
+          if (slice == 4) r.host.send(r.midStall);
+        },
+        this);
+  }
   FakeClock clock{1000};
   FakeSerialCable cable;
   MemoryReporter reporter;
@@ -210,6 +222,7 @@ struct Rig {
   SerialLink link;
   Pipeline pipeline;
   Host host;
+  ctp_command_t midStall{};
 };
 
 }  // namespace
@@ -441,12 +454,7 @@ TEST_CASE("while the camera stalls, heartbeats still go out and commands are ans
   rig.host.drain();
   // 2.5 s without a frame before frame 1 (the live Kinect waits up to its stall timeout);
   // a RESET comes 0.5 s into it.
-  rig.source.stallAt(
-      1, 25, &rig.clock,
-      [](int slice, void* host) {
-        if (slice == 4) static_cast<Host*>(host)->send(command(CTP_CMD_RESET, 60));
-      },
-      &rig.host);
+  rig.stallThenSend(1, 25, command(CTP_CMD_RESET, 60));
   REQUIRE(rig.step() == StepResult::Continue);
   const auto msgs = rig.host.drain();
   CHECK(countType(msgs, CTP_MSG_HEARTBEAT) == 2);  // at 1 s and 2 s of silence
@@ -461,12 +469,7 @@ TEST_CASE("a STOP that arrives while the camera stalls ends the wait and the run
   REQUIRE(rig.step() == StepResult::Continue);
   rig.host.drain();
   // 100 s without a frame; a STOP comes 0.5 s into it.
-  rig.source.stallAt(
-      1, 1000, &rig.clock,
-      [](int slice, void* host) {
-        if (slice == 4) static_cast<Host*>(host)->send(command(CTP_CMD_STOP, 61));
-      },
-      &rig.host);
+  rig.stallThenSend(1, 1000, command(CTP_CMD_STOP, 61));
   CHECK(rig.step() == StepResult::Stopped);
   const auto msgs = rig.host.drain();
   REQUIRE(msgs.size() == 1);
