@@ -63,6 +63,11 @@ const char* usage() {
          "                     first box (the others are neither tracked nor scored)\n"
          "  --drop-frames PCT  a lossy link: drop PCT percent of the frames at random\n"
          "                     (the same ones for every tracker and run, from --seed)\n"
+         "  --from F, --to T   for the next SEQUENCE: only its frames with index F .. T\n"
+         "                     (the track begins at the first ground-truth box from F on)\n"
+         "  --reverse          for the next SEQUENCE: play it backwards, from its last\n"
+         "                     ground-truth box (list a file several times with different\n"
+         "                     --from / --to / --reverse for OTB-style temporal robustness)\n"
          "  --skip-bad-frames  let readers skip unreadable frames (counted) instead of failing\n"
          "  --rgb-only         drop the depth of every sequence (best then runs 2D; 2.x fail)\n"
          "  --max-mem MIB      memory for one decoded sequence (default 4096)\n"
@@ -86,7 +91,7 @@ const char* usage() {
 bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std::string* err) {
   *help = false;
   std::vector<std::string> trackers, configs;
-  std::string pendingGt;
+  SequenceArg pending;  // --gt, --from, --to, --reverse wait for their SEQUENCE
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](const char** v) {
@@ -104,7 +109,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       return true;
     } else if (a == "--gt") {
       if (!value(&v)) return false;
-      pendingGt = v;
+      pending.gtPath = v;
     } else if (a == "--tracker") {
       if (!value(&v)) return false;
       for (const std::string& t : splitComma(v)) {
@@ -159,6 +164,13 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
         o->stride = static_cast<int>(n);
       else
         o->dropPct = static_cast<int>(n);
+    } else if (a == "--from" || a == "--to") {
+      if (!value(&v)) return false;
+      if (!parseCount(v, 0, 100000000, &n)) {
+        *err = a + ": '" + v + "' is not a frame index (a whole number from 0)";
+        return false;
+      }
+      (a == "--from" ? pending.fromIndex : pending.toIndex) = static_cast<int>(n);
     } else if (a == "--seed") {
       if (!value(&v)) return false;
       errno = 0;
@@ -191,6 +203,8 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       }
     } else if (a == "--skip-bad-frames") {
       o->skipBadFrames = true;
+    } else if (a == "--reverse") {
+      pending.reverse = true;
     } else if (a == "--rgb-only") {
       o->rgbOnly = true;
     } else if (a == "--quiet") {
@@ -199,12 +213,22 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       *err = "unknown option '" + a + "'";
       return false;
     } else {
-      o->sequences.push_back({a, pendingGt});
-      pendingGt.clear();
+      if (pending.fromIndex >= 0 && pending.toIndex >= 0 && pending.toIndex < pending.fromIndex) {
+        *err = "--to " + std::to_string(pending.toIndex) + " lies before --from " +
+               std::to_string(pending.fromIndex) + " (for " + a + ")";
+        return false;
+      }
+      pending.spec = a;
+      o->sequences.push_back(pending);
+      pending = SequenceArg{};
     }
   }
-  if (!pendingGt.empty()) {
-    *err = "--gt " + pendingGt + " is not followed by a sequence";
+  if (!pending.gtPath.empty()) {
+    *err = "--gt " + pending.gtPath + " is not followed by a sequence";
+    return false;
+  }
+  if (pending.fromIndex >= 0 || pending.toIndex >= 0 || pending.reverse) {
+    *err = "--from / --to / --reverse are not followed by a sequence";
     return false;
   }
   if (o->sequences.empty()) {

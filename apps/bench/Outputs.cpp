@@ -1,5 +1,7 @@
 #include "Outputs.hpp"
 
+#include <algorithm>
+
 #include <sys/stat.h>
 
 #include <cerrno>
@@ -90,8 +92,8 @@ bool writeOverlapPlot(const std::string& path, const std::vector<EntryResult>& e
   int maxFrame = 1;
   for (const EntryResult& e : entries) {
     const SequenceResult& s = e.sequences[sequence];
-    if (s.ran && !s.frameIndex.empty() && s.frameIndex.back() > maxFrame)
-      maxFrame = s.frameIndex.back();
+    if (s.ran)  // not the last frame's index: a --reverse'd sequence ends at its smallest
+      for (const int index : s.frameIndex) maxFrame = std::max(maxFrame, index);
   }
   auto px = [&](double frame, double overlapValue) {
     return cv::Point(left + static_cast<int>(frame / maxFrame * plotW),

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
@@ -154,6 +155,39 @@ void thinSequence(Sequence* seq, int stride, int dropPct, uint64_t seed) {
       ++seq->droppedFrames;
   }
   seq->frames = std::move(kept);
+}
+
+bool sliceSequence(Sequence* seq, int fromIndex, int toIndex, bool reverse, std::string* err) {
+  if (fromIndex < 0 && toIndex < 0 && !reverse) return true;
+  const size_t before = seq->frames.size();
+  std::vector<CachedFrame> kept;
+  kept.reserve(before);
+  for (CachedFrame& f : seq->frames)
+    if ((fromIndex < 0 || f.index >= fromIndex) && (toIndex < 0 || f.index <= toIndex))
+      kept.push_back(std::move(f));
+  std::string suffix;
+  if (fromIndex >= 0) suffix += ".from" + std::to_string(fromIndex);
+  if (toIndex >= 0) suffix += ".to" + std::to_string(toIndex);
+  if (reverse) suffix += ".reversed";
+  if (kept.empty()) {
+    *err = seq->name + ": no frame has an index in " +
+           (fromIndex < 0 ? std::string("0") : std::to_string(fromIndex)) + ".." +
+           (toIndex < 0 ? std::string("end") : std::to_string(toIndex)) + " (of " +
+           std::to_string(before) + " frames)";
+    return false;
+  }
+  if (reverse) {
+    uint64_t tMin = kept.front().timeUs, tMax = kept.front().timeUs;
+    for (const CachedFrame& f : kept) {
+      tMin = std::min(tMin, f.timeUs);
+      tMax = std::max(tMax, f.timeUs);
+    }
+    std::reverse(kept.begin(), kept.end());
+    for (CachedFrame& f : kept) f.timeUs = tMin + (tMax - f.timeUs);
+  }
+  seq->frames = std::move(kept);
+  seq->name += suffix;
+  return true;
 }
 
 SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const TrackerFactory& factory,

@@ -92,6 +92,7 @@ int main(int argc, char** argv) {
       if (!ok) seq.name = source->name();
     }
     source.reset();  // decoded: the reader's buffers are no longer needed
+    if (ok) ok = sliceSequence(&seq, arg.fromIndex, arg.toIndex, arg.reverse, &err);
     if (!ok) {
       std::fprintf(stderr, "cuetrack-bench: %s (skipped)\n", err.c_str());
       ++failures;

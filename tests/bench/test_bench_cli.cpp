@@ -78,6 +78,16 @@ TEST_CASE("a bad command line exits 2 with one clear line pointing to --help") {
   r = runBench("");
   CHECK(r.exitCode == 2);
   CHECK(r.out.find("no sequence given") != std::string::npos);
+  r = runBench("synth:moving --reverse");  // --from / --to / --reverse precede a sequence
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("--from / --to / --reverse are not followed by a sequence") !=
+        std::string::npos);
+  r = runBench("--from 9 --to 3 synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("--to 3 lies before --from 9 (for synth:moving)") != std::string::npos);
+  r = runBench("--from -1 synth:moving");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("--from: '-1' is not a frame index") != std::string::npos);
 }
 
 #if CUETRACK_BENCH_TEST_SYNTH
@@ -167,6 +177,20 @@ TEST_CASE("lost results exit 1: stdout full, --results not writable") {
   CHECK(r.out.find("/proc/cuetrack-nope", at + 1) == std::string::npos);  // said once
   r = runBench("synth:moving:5 --runs 1 --quiet");
   CHECK(r.exitCode == 0);  // control
+}
+#endif
+
+#if CUETRACK_BENCH_TEST_SYNTH
+TEST_CASE("--from / --to / --reverse apply to the next sequence; an empty slice fails it alone") {
+  const Run r = runBench(
+      "--from 50 synth:moving --to 4 --reverse synth:moving synth:moving --frames 8 --runs 1 "
+      "--quiet --tracker opencv-mosse");
+  CHECK(r.exitCode == 1);
+  CHECK(r.out.find("cuetrack-bench: moving: no frame has an index in 50..end (of 8 frames) "
+                   "(skipped)") != std::string::npos);
+  // The two others ran, each under its own name.
+  CHECK(r.out.find("moving.to4.re") != std::string::npos);
+  CHECK(r.out.find("failed") != std::string::npos);
 }
 #endif
 

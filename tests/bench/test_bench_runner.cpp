@@ -237,6 +237,92 @@ TEST_CASE("thinning: every K-th frame after the first box, random drops the same
   CHECK(untouched.droppedFrames == 0);
 }
 
+struct Played {
+  SequenceResult result;
+  int initIndex = -1;
+  Box initBox{};
+  std::vector<int> indices;
+  std::vector<uint64_t> timesUs;
+};
+
+// Writes where it was started and which frames it was then given, in order, into a
+// Played that outlives it (the runner destroys its trackers).
+class RecordingTracker final : public BenchTracker {
+ public:
+  explicit RecordingTracker(Played* out) : _out(out) {}
+  bool init(const CachedFrame& f, const Box& box, uint64_t, std::string*) override {
+    _out->initIndex = f.index;
+    _out->initBox = box;
+    return true;
+  }
+  Box update(const CachedFrame& f, double* stageUs) override {
+    stageUs[4] = 1000;
+    _out->indices.push_back(f.index);
+    _out->timesUs.push_back(f.timeUs);
+    return f.groundTruth;
+  }
+
+ private:
+  Played* _out;
+};
+
+Played play(const Sequence& seq) {
+  Played played;
+  TrackerFactory factory = [&played](const EntrySpec&, std::string*) {
+    return std::unique_ptr<BenchTracker>(std::make_unique<RecordingTracker>(&played));
+  };
+  Progress quiet(false);
+  played.result = runEntry({"fake", "default", 1}, seq, factory, RunOptions{}, quiet);
+  return played;
+}
+
+TEST_CASE("slicing: another start, another end, backwards; timestamps still increase") {
+  MovingSquareSource src(21, -1);
+  Sequence whole = load(src);
+  const Played control = play(whole);  // unsliced: starts at frame 0 and plays 1..20
+  CHECK(control.initIndex == 0);
+  CHECK(control.indices.size() == 20);
+
+  Sequence part = whole;
+  std::string err;
+  REQUIRE(sliceSequence(&part, 5, 12, false, &err));
+  CHECK(part.name == "square.from5.to12");
+  Played p = play(part);
+  CHECK(p.initIndex == 5);
+  CHECK(p.initBox.x == 30.f);  // the square's box at frame 5: x = 20 + 2 * 5
+  CHECK(p.indices == std::vector<int>{6, 7, 8, 9, 10, 11, 12});
+  CHECK(p.result.frameIndex == p.indices);
+
+  Sequence back = whole;
+  REQUIRE(sliceSequence(&back, -1, -1, true, &err));
+  CHECK(back.name == "square.reversed");
+  p = play(back);
+  CHECK(p.initIndex == 20);  // the last ground-truth box
+  CHECK(p.initBox.x == 60.f);
+  REQUIRE(p.indices.size() == 20);
+  CHECK(p.indices.front() == 19);
+  CHECK(p.indices.back() == 0);
+  for (size_t i = 0; i < p.timesUs.size(); ++i)  // mirrored: same 33 ms gaps, increasing
+    CHECK(p.timesUs[i] == static_cast<uint64_t>(i + 1) * 33333u);
+  REQUIRE(p.result.ran);
+  CHECK(p.result.figures.overlap == Approx(100.0));  // [%]: each frame kept its own truth
+
+  Sequence backPart = whole;
+  REQUIRE(sliceSequence(&backPart, 3, 9, true, &err));
+  CHECK(backPart.name == "square.from3.to9.reversed");
+  p = play(backPart);
+  CHECK(p.initIndex == 9);
+  CHECK(p.indices == std::vector<int>{8, 7, 6, 5, 4, 3});
+
+  Sequence none = whole;
+  CHECK_FALSE(sliceSequence(&none, 30, -1, false, &err));
+  CHECK(err == "square: no frame has an index in 30..end (of 21 frames)");
+  Sequence untouched = whole;
+  REQUIRE(sliceSequence(&untouched, -1, -1, false, &err));
+  CHECK(untouched.name == "square");
+  CHECK(untouched.frames.size() == 21);
+}
+
 TEST_CASE("invisible targets count with overlap 0; no box at all means nothing to start from") {
   MovingSquareSource hidden(5, -1, false);
   const Sequence seq = load(hidden);
