@@ -41,8 +41,18 @@ const char* notRunCell(const SequenceResult& s) {
   return s.error.rfind("sequence failed", 0) == 0 ? "failed" : "cannot run";
 }
 
+// Too long a name loses its middle, not a slice's suffix (".from100.to300.rev"), which
+// is what tells the columns of one file's runs apart.
 std::string fit(const std::string& s, size_t width) {
-  return s.size() <= width ? s : s.substr(0, width - 1) + "~";
+  if (s.size() <= width) return s;
+  size_t cut = s.size();
+  for (const char* mark : {".from", ".to", ".rev"}) {
+    const size_t at = s.rfind(mark);
+    if (at != std::string::npos && at > 0 && at < cut) cut = at;
+  }
+  const size_t tail = s.size() - cut;
+  if (tail == 0 || tail + 3 > width) return s.substr(0, width - 1) + "~";
+  return s.substr(0, width - 1 - tail) + "~" + s.substr(cut);
 }
 
 // Two figures per sequence, then the averages: the paper's table layout, for each pair.

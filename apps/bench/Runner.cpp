@@ -168,7 +168,7 @@ bool sliceSequence(Sequence* seq, int fromIndex, int toIndex, bool reverse, std:
   std::string suffix;
   if (fromIndex >= 0) suffix += ".from" + std::to_string(fromIndex);
   if (toIndex >= 0) suffix += ".to" + std::to_string(toIndex);
-  if (reverse) suffix += ".reversed";
+  if (reverse) suffix += ".rev";
   if (kept.empty()) {
     *err = seq->name + ": no frame has an index in " +
            (fromIndex < 0 ? std::string("0") : std::to_string(fromIndex)) + ".." +

@@ -189,7 +189,7 @@ TEST_CASE("--from / --to / --reverse apply to the next sequence; an empty slice 
   CHECK(r.out.find("cuetrack-bench: moving: no frame has an index in 50..end (of 8 frames) "
                    "(skipped)") != std::string::npos);
   // The two others ran, each under its own name.
-  CHECK(r.out.find("moving.to4.re") != std::string::npos);
+  CHECK(r.out.find("moving.to4.rev") != std::string::npos);
   CHECK(r.out.find("failed") != std::string::npos);
 }
 #endif

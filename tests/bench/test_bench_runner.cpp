@@ -295,7 +295,7 @@ TEST_CASE("slicing: another start, another end, backwards; timestamps still incr
 
   Sequence back = whole;
   REQUIRE(sliceSequence(&back, -1, -1, true, &err));
-  CHECK(back.name == "square.reversed");
+  CHECK(back.name == "square.rev");
   p = play(back);
   CHECK(p.initIndex == 20);  // the last ground-truth box
   CHECK(p.initBox.x == 60.f);
@@ -309,10 +309,22 @@ TEST_CASE("slicing: another start, another end, backwards; timestamps still incr
 
   Sequence backPart = whole;
   REQUIRE(sliceSequence(&backPart, 3, 9, true, &err));
-  CHECK(backPart.name == "square.from3.to9.reversed");
+  CHECK(backPart.name == "square.from3.to9.rev");
   p = play(backPart);
   CHECK(p.initIndex == 9);
   CHECK(p.indices == std::vector<int>{8, 7, 6, 5, 4, 3});
+
+  // A long name loses its middle in the text table, never the slice that tells runs apart.
+  EntryResult e{"fake", "default", 1, {}};
+  for (const char* name : {"Vid_E_person_partially_occluded.from200.rev", "Vid_C_juice.to100.rev",
+                           "Vid_E_person_partially_occluded"}) {
+    e.sequences.push_back(p.result);
+    e.sequences.back().name = name;
+  }
+  const std::string text = textReport({e});
+  CHECK(text.find(" Vi~.from200.rev") != std::string::npos);
+  CHECK(text.find(" Vid_~.to100.rev") != std::string::npos);
+  CHECK(text.find("Vid_E_person_p~") != std::string::npos);  // no slice: the end goes
 
   Sequence none = whole;
   CHECK_FALSE(sliceSequence(&none, 30, -1, false, &err));
