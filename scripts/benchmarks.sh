@@ -11,7 +11,9 @@
 #     with each switch off, and KCF / CSRT;
 #   - BoBoT again as a slower camera (every 2nd frame) and a lossy link (10% of the
 #     frames dropped): best, best-nofastmotion, 1.1, KCF and CSRT; the synthetic
-#     scenes at 10 fps (every 3rd frame): best, best-nofastmotion, 2.1, KCF and CSRT.
+#     scenes at 10 fps (every 3rd frame): best, best-nofastmotion, 2.1, KCF and CSRT;
+#   - BoBoT from other starts and backwards (OTB's temporal robustness, --from / --to /
+#     --reverse): 1.1, best, KCF, CSRT and MedianFlow.
 # Environment: CUETRACK_SHARED_DIR (default ../shared), BUILD (build tree, default
 # build/benchmarks), RUNS (BoBoT runs, 10), SYN_RUNS (synthetic runs, 5),
 # PEER_RUNS (OpenCV peer runs, 1: TLD, CSRT and MIL take 100-200 ms a frame), FRAMES (cut every sequence, default whole),
@@ -93,6 +95,14 @@ lossy_cmd=("$BENCH" "${bobot_seqs[@]}" --tracker cuetrack,opencv-kcf,opencv-csrt
 slowsyn_cmd=("$BENCH" "${syn_seqs[@]}" --tracker cuetrack,opencv-kcf,opencv-csrt
              --config best,best-nofastmotion,2.1 --runs "$SYN_RUNS" --peer-runs "$PEER_RUNS"
              "${frames_opt[@]}" --stride 3 --markdown "$OUT/slowsyn.md" --json "$OUT/slowsyn.json")
+# Temporal robustness: each video from frames 0, 100, 200 forward and from its end, 200,
+# 100 backward, one bench run per video (its table's Averages are over the six starts).
+tre_cmd() {  # sets the array TRE for the video $1
+  local f=$1
+  TRE=("$BENCH" "$f" --from 100 "$f" --from 200 "$f" --reverse "$f" --to 200 --reverse "$f"
+       --to 100 --reverse "$f" --tracker cuetrack,opencv-kcf,opencv-csrt,opencv-medianflow
+       --config 1.1,best --runs "$RUNS" --peer-runs "$PEER_RUNS" "${frames_opt[@]}")
+}
 show() { local s="$*"; s=${s//$ROOT\//}; s=${s//$SHARED/..\/shared}; echo "$s"; }
 
 if [ -d "$BOBOT" ]; then
@@ -102,6 +112,13 @@ if [ -d "$BOBOT" ]; then
   "${slow_cmd[@]}" > "$OUT/slow.txt" || status=1
   stamp "BoBoT, 10% dropped: ${lossy_cmd[*]}"
   "${lossy_cmd[@]}" > "$OUT/lossy.txt" || status=1
+  for f in "${bobot_seqs[@]}"; do
+    [ -n "$FRAMES" ] && break  # FRAMES would cut the videos before their later starts
+    n=$(basename "$f" .avi)
+    tre_cmd "$f"
+    stamp "BoBoT from other starts: ${TRE[*]}"
+    "${TRE[@]}" --markdown "$OUT/tre-$n.md" --json "$OUT/tre-$n.json" > "$OUT/tre-$n.txt" || status=1
+  done
 else
   echo "benchmarks.sh: $BOBOT not found: the BoBoT part is left out" >&2
   status=1
@@ -222,6 +239,34 @@ block="$OUT/block.md"
     echo "10% of the frames dropped:"
     echo
     cat "$OUT/lossy.md"
+  else
+    echo "(not run: $BOBOT missing or failed; see the script's messages)"
+  fi
+  echo
+  echo "### BoBoT from other starts and backwards: temporal robustness"
+  echo
+  if [ -n "$FRAMES" ]; then
+    echo "(not run: FRAMES=$FRAMES cuts the videos before their later starts)"
+  elif [ -f "$OUT/tre-Vid_H_panda.md" ]; then
+    echo "Each video started at frames 0, 100 and 200 and played forward, and started at its"
+    echo "end, at 200 and at 100 and played backward (\`--from\`, \`--to\`, \`--reverse\`;"
+    echo "docs/bench-json.md): the temporal robustness evaluation of the OTB benchmark, plus"
+    echo "a target that moves the other way. Each run initialises at its first frame's"
+    echo "ground-truth box; Averages are over the six starts. Where E starts inside the"
+    echo "occlusion (\`.from200\`, \`.to200.rev\`), the first box holds half the person and every"
+    echo "tracker keeps that half, so every one scores 60-70 there. cuetrack: $RUNS runs; KCF,"
+    echo "CSRT and MedianFlow: $PEER_RUNS runs. Commands:"
+    echo
+    echo '```'
+    for f in "${bobot_seqs[@]}"; do
+      tre_cmd "$f"
+      show "${TRE[*]}"
+    done
+    echo '```'
+    for f in "${bobot_seqs[@]}"; do
+      echo
+      cat "$OUT/tre-$(basename "$f" .avi).md"
+    done
   else
     echo "(not run: $BOBOT missing or failed; see the script's messages)"
   fi

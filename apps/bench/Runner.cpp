@@ -169,8 +169,10 @@ bool sliceSequence(Sequence* seq, int fromIndex, int toIndex, bool reverse, std:
   if (fromIndex >= 0) suffix += ".from" + std::to_string(fromIndex);
   if (toIndex >= 0) suffix += ".to" + std::to_string(toIndex);
   if (reverse) suffix += ".rev";
+  const std::string base = seq->name;
+  seq->name += suffix;  // also when it fails: the tables then name the slice that failed
   if (kept.empty()) {
-    *err = seq->name + ": no frame has an index in " +
+    *err = base + ": no frame has an index in " +
            (fromIndex < 0 ? std::string("0") : std::to_string(fromIndex)) + ".." +
            (toIndex < 0 ? std::string("end") : std::to_string(toIndex)) + " (of " +
            std::to_string(before) + " frames)";
@@ -186,7 +188,6 @@ bool sliceSequence(Sequence* seq, int fromIndex, int toIndex, bool reverse, std:
     for (CachedFrame& f : kept) f.timeUs = tMin + (tMax - f.timeUs);
   }
   seq->frames = std::move(kept);
-  seq->name += suffix;
   return true;
 }
 

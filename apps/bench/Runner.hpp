@@ -66,7 +66,8 @@ void thinSequence(Sequence* seq, int stride, int dropPct, uint64_t seed);
 // the track begins at the last ground-truth box. Reversed timestamps are mirrored
 // (t' = tMin + tMax - t) so they still increase with the same gaps; frame indices stay
 // the recording's. The name gets ".fromF", ".toT", ".rev" so tables and output
-// files say what was run. False with one line in *err when no frame is left.
+// files say what was run (also on failure). False with one line in *err when no frame
+// is left.
 bool sliceSequence(Sequence* seq, int fromIndex, int toIndex, bool reverse, std::string* err);
 
 // One tracker as the runner sees it.

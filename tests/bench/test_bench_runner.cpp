@@ -329,6 +329,7 @@ TEST_CASE("slicing: another start, another end, backwards; timestamps still incr
   Sequence none = whole;
   CHECK_FALSE(sliceSequence(&none, 30, -1, false, &err));
   CHECK(err == "square: no frame has an index in 30..end (of 21 frames)");
+  CHECK(none.name == "square.from30");  // the table names the slice that failed
   Sequence untouched = whole;
   REQUIRE(sliceSequence(&untouched, -1, -1, false, &err));
   CHECK(untouched.name == "square");
