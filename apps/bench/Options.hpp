@@ -25,12 +25,9 @@ struct Options {
   int runs = 10;
   int peerRuns = -1;  // -1: same as runs
   uint64_t seed = 1;
-  int maxFrames = 0;     // 0: whole sequences
-  int stride = 1;        // --stride: every stride-th frame after the first box
-  int dropPct = 0;       // --drop-frames: of those, this percent dropped at random
-  int fromIndex = -1;    // --from: frames with a smaller index left out (-1: none)
-  int toIndex = -1;      // --to: frames with a larger index left out (-1: none)
-  bool reverse = false;  // --reverse: the kept frames played backwards
+  int maxFrames = 0;  // 0: whole sequences
+  int stride = 1;     // --stride: every stride-th frame after the first box
+  int dropPct = 0;    // --drop-frames: of those, this percent dropped at random
   size_t maxMemMiB = 4096;
   bool skipBadFrames = false;
   bool rgbOnly = false;  // drop the depth of every sequence (tests the trackers' RGB-only mode)
