@@ -136,11 +136,13 @@ else
 fi
 stamp "runs done (exit status $status)"
 
-# Plots into docs/img (small PNGs, referenced from the doc).
-rm -f "$IMG"/bench-*.png
-for p in "$OUT"/plots/*.png; do
-  [ -e "$p" ] && cp "$p" "$IMG/bench-$(basename "$p" .overlap.png).png"
-done
+# Plots into docs/img (small PNGs, referenced from the doc); DRY=1 leaves docs/ alone.
+if [ "${DRY:-0}" != 1 ]; then
+  rm -f "$IMG"/bench-*.png
+  for p in "$OUT"/plots/*.png; do
+    [ -e "$p" ] && cp "$p" "$IMG/bench-$(basename "$p" .overlap.png).png"
+  done
+fi
 
 cpu=$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')
 os=$(. /etc/os-release && echo "$PRETTY_NAME")
