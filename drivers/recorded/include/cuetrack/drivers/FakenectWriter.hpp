@@ -16,7 +16,7 @@ namespace cuetrack {
 // Writes frames as a fakenect recording (INDEX.txt, d-/r-/a- files, groundtruth.txt
 // in BoBoT format when frames carry ground truth). Depth [mm] -> raw with
 // kinect::mmToRaw. Only 640x480 is valid for fakenect replay; other sizes are written
-// as they are (our reader takes them) and say so in warning().
+// as they are (our reader takes them; libfreenect's fakenect cannot replay them).
 class FakenectWriter {
  public:
   FakenectWriter() = default;
