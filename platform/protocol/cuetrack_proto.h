@@ -7,7 +7,7 @@
  * Frame on the wire:  COBS( version | type | payload | crc16_le ) 0x00
  * All multi-byte fields little-endian. CRC-16/CCITT-FALSE over version..payload.
  *
- * Memory: ctp_decoder_t is CTP_MAX_ENCODED + ~40 bytes; nothing else is kept.
+ * Memory: ctp_decoder_t is CTP_MAX_ENCODED + 23 bytes (92 B); nothing else is kept.
  */
 #ifndef CUETRACK_PROTO_H
 #define CUETRACK_PROTO_H
