@@ -536,7 +536,12 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   // Just found again (on probation): the estimate may be off the target's centre, or
   // on a look-alike; learn only once the detector has confirmed it.
   bool learned = false;
-  if (!e.box.empty() && !occluded && !_lost.onProbation() &&
+  // 3D: an estimate well off the confirmed depth (though not yet a jump that counts as a
+  // miss above) is not learnt either: it is the cloud sliding off a low-contrast target.
+  const bool depthSettled =
+      !(_is3d && _config.lostDetection) || _config.learnMaxDepthChange <= 0.f ||
+      depthWithin(e.particle.p[2], _depthRefMm, 1.f + _config.learnMaxDepthChange);
+  if (!e.box.empty() && !occluded && !_lost.onProbation() && depthSettled &&
       _gate.open(e.confidence, e.concentration, _state)) {
     // Only on frames fit to learn: the estimate is then on the target.
     if (_is3d && _config.adaptCylinderSize && _config.cylinderSizeGain > 0.f && frame.hasDepth() &&

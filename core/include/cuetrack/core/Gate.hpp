@@ -19,6 +19,12 @@ struct UpdateGate {
   }
 };
 
+// 3D: whether depth zMm lies within a factor `ratio` (>= 1) of the reference refMm,
+// either way; true while there is no reference (refMm <= 0).
+inline bool depthWithin(float zMm, float refMm, float ratio) {
+  return refMm <= 0.f || (zMm <= ratio * refMm && zMm * ratio >= refMm);
+}
+
 // Lost after `lostAfter` consecutive frames with confidence below `lostBelow`;
 // found again after `foundAfter` consecutive frames at or above the found threshold:
 // `foundAbove`, or, if higher, the confidence the target typically had while tracked

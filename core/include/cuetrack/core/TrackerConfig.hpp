@@ -51,6 +51,11 @@ struct TrackerConfig {
   // RGB tests use 32), and partial occlusions in RGB dip the confidence for longer.
   int numWeakClassifiers2d = 0;  // M in the 2D fallback, <= kMaxWeakClassifiers
   int lostAfter2d = 0;           // lost detection in the 2D fallback: frames of low confidence
+  // lostDetection, 3D: no learning from an estimate whose depth lies more than this part
+  // off the depth last confirmed (learnt or found again), either way; 0 = no such check.
+  // A cloud sliding onto the wall behind a low-contrast target can score well for a frame,
+  // and one positive learnt there teaches the wall (docs/algorithm.md).
+  float learnMaxDepthChange = 0.12f;
 
   // Implementation parameters (docs/algorithm.md), the same in every preset
   Estimator estimator = Estimator::WeightedMean;
