@@ -11,6 +11,7 @@ constexpr float kLostSpread = 3.f;  // motion noise gain while lost
 // cloud keeps following the best candidate so the detector can confirm it.
 constexpr int kSearchEvery = 2;
 constexpr float kSearchGrowth = 0.25f;
+constexpr float kFramePeriod30S = 1.f / 30.f;  // learnDepthFollow is per frame at 30 fps
 constexpr float kDepthJumpRatio = 0.75f;  // 3D: estimate depth / last learnt depth (or inverse)
 constexpr float kSearchInside = 0.8f;     // while lost, windows must lie this much inside
 // refineSearch: hill-climbing steps of a search window, first this part of its side, halved
@@ -344,7 +345,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     q.size[1] = b.h;
   }
   _lastEstimate = q;
-  _depthRefMm = q.p[2];
+  _depthRefMm = _learnRefMm = _prevDepthMm = q.p[2];
   _lastBox = b;
   _sizeFilter.reset(b);
 
@@ -519,7 +520,8 @@ Tracker::Estimate Tracker::estimate(bool wasLost) {
   return e;
 }
 
-bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi) {
+bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi,
+                     float dtS) {
   bool occluded = false;
   if (_config.lostDetection) {
     // 3D: the estimate jumped well in front of or behind where the target was last
@@ -540,7 +542,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   // miss above) is not learnt either: it is the cloud sliding off a low-contrast target.
   const bool depthSettled =
       !(_is3d && _config.lostDetection) || _config.learnMaxDepthChange <= 0.f ||
-      depthWithin(e.particle.p[2], _depthRefMm, 1.f + _config.learnMaxDepthChange);
+      depthWithin(e.particle.p[2], _learnRefMm, 1.f + _config.learnMaxDepthChange);
   if (!e.box.empty() && !occluded && !_lost.onProbation() && depthSettled &&
       _gate.open(e.confidence, e.concentration, _state)) {
     // Only on frames fit to learn: the estimate is then on the target.
@@ -553,8 +555,18 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   }
   // The depth the target was last confirmed at: learnt, or found again (it may have
   // moved in depth while hidden).
-  if (learned || (_state == TrackState::Tracking && (wasLost || _lost.onProbation())))
-    _depthRefMm = e.particle.p[2];
+  const bool confirmed =
+      learned || (_state == TrackState::Tracking && (wasLost || _lost.onProbation()));
+  if (confirmed) _depthRefMm = e.particle.p[2];
+  // The learning check's reference: confirmed as above, or following the estimate while it
+  // moves smoothly in depth (a target walking away while nothing is learnt), not when it
+  // jumps (a cloud sliding onto the wall); the allowance scales with the frame gap.
+  const float gap = dtS > kFramePeriod30S ? dtS / kFramePeriod30S : 1.f;
+  if (confirmed ||
+      (_state == TrackState::Tracking &&
+       depthWithin(e.particle.p[2], _prevDepthMm, 1.f + _config.learnDepthFollow * gap)))
+    _learnRefMm = e.particle.p[2];
+  _prevDepthMm = e.particle.p[2];
   return learned;
 }
 
@@ -604,7 +616,7 @@ TrackResult Tracker::update(const Frame& frame) {
   score(roi, wasLost);
   Estimate e = estimate(wasLost);
   const uint64_t t3 = now();
-  const bool learned = decide(frame, e, wasLost, roi);
+  const bool learned = decide(frame, e, wasLost, roi, dtS);
   _jumpArmed = _config.fastMotion && learned;
   const uint64_t t4 = now();
 

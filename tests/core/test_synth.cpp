@@ -258,13 +258,13 @@ TEST_CASE("best does not learn the wall when its cloud slides off a low-contrast
   // The grey cylinder on the grey wall, played backwards (cuetrack-bench --reverse
   // synth:untextured, run 7): at a turn of its motion the cloud slid 23% back toward the
   // wall while scoring 0.69; learnt there, the classifier took the wall for the target
-  // and the run was lost for good (24% hits). Measured 2026-11-23: 70% hits with the check.
+  // and the run was lost for good (24% hits). Measured 2026-11-23: 64% hits with the check.
   TrackerConfig unchecked = presetConfig(Preset::Best);
   unchecked.learnMaxDepthChange = 0.f;
   const Stats with = runSceneBackwards("untextured", presetConfig(Preset::Best), 7, 150);
   const Stats without = runSceneBackwards("untextured", unchecked, 7, 150);
-  CHECK(with.hitRate() >= 0.6f);
-  CHECK(without.hitRate() < 0.4f);  // control: the failure is still there without the check
+  CHECK(with.hitRate() >= 0.5f);
+  CHECK(without.hitRate() < 0.35f);  // control: the failure is still there without the check
 }
 
 TEST_CASE("climbing the best search windows finds the reappeared target sooner", "[core][e2e]") {

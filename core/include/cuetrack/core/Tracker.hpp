@@ -82,7 +82,7 @@ class Tracker {
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
   Estimate estimate(bool wasLost);                 // weights and the estimate
   // Lost detection, the update gate and learning; true when learnt.
-  bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi);
+  bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi, float dtS);
 
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
   Box particleBox(const Particle& q) const;
@@ -119,8 +119,10 @@ class Tracker {
   SizeFilter2d _sizeFilter{};      // 2D: the estimate's size, smoothed
   TemplateAnchor _templateAnchor;  // 2D, scaleAnchor2d: the init box's grey template
   Particle _lastEstimate{};
-  int _lostFrames = 0;      // lost detection (beyond the paper): frames since declared lost
-  float _depthRefMm = 0.f;  // ... 3D: depth of the last confirmed estimate [mm]
+  int _lostFrames = 0;       // lost detection (beyond the paper): frames since declared lost
+  float _depthRefMm = 0.f;   // ... 3D: depth of the last confirmed estimate [mm]
+  float _learnRefMm = 0.f;   // ... 3D: the learning check's reference (learnMaxDepthChange)
+  float _prevDepthMm = 0.f;  // ... 3D: the last frame's estimate depth
 
   IntegralChannels _channels;
   FeaturePool _pool;
@@ -139,7 +141,7 @@ class Tracker {
   CylinderSizer _sizer{};  // adaptCylinderSize: D, H and the centre follow the depth silhouette
   uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
 };
-// Everything together (Config.hpp's list of big buffers plus the small ones): 10,531,736 B
+// Everything together (Config.hpp's list of big buffers plus the small ones): 10,531,752 B
 // on x86-64 at 640x480, within the 16 MiB.
 static_assert(sizeof(Tracker) <= kTrackerBudgetBytes, "the tracker must fit its 16 MiB budget");
 

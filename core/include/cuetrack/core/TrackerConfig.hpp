@@ -52,10 +52,13 @@ struct TrackerConfig {
   int numWeakClassifiers2d = 0;  // M in the 2D fallback, <= kMaxWeakClassifiers
   int lostAfter2d = 0;           // lost detection in the 2D fallback: frames of low confidence
   // lostDetection, 3D: no learning from an estimate whose depth lies more than this part
-  // off the depth last confirmed (learnt or found again), either way; 0 = no such check.
-  // A cloud sliding onto the wall behind a low-contrast target can score well for a frame,
-  // and one positive learnt there teaches the wall (docs/algorithm.md).
+  // off the confirmed depth, either way; 0 = no such check. The confirmed depth is the
+  // last learnt or re-found one, and it follows the estimate while that moves smoothly
+  // (by at most learnDepthFollow a frame at 30 fps). A cloud sliding onto the wall behind
+  // a low-contrast target can score well for a frame, and one positive learnt there
+  // teaches the wall (docs/algorithm.md).
   float learnMaxDepthChange = 0.12f;
+  float learnDepthFollow = 0.03f;
 
   // Implementation parameters (docs/algorithm.md), the same in every preset
   Estimator estimator = Estimator::WeightedMean;
