@@ -354,13 +354,15 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
 
   if (!_pool.build(_config.useGray, _depthFeatures, _config.useColour, _config.sampling, _rng))
     return InitError::BoxTooSmall;  // cannot happen with kMaxPoolFeatures (static_assert-backed)
-  _set.reset(_config.numTrainingExamples, _config.initialPositives);
+  const int anchors = _is3d ? _config.initialPositives : _config.initialPositives2d;
+  _set.reset(_config.numTrainingExamples, anchors);
   addExample(b, true);  // slot 0: the anchor
   _templateAnchor.clear();
   if (!_is3d && _config.scaleAnchor2d) _templateAnchor.capture(_channels.tables(), b);
-  for (int i = 1; i < _config.initialPositives; ++i) {
-    const float s = fmath::fastExp(0.03f * _rng.gaussian());
-    const Box j{b.x + 0.03f * b.w * _rng.gaussian(), b.y + 0.03f * b.h * _rng.gaussian(), b.w * s,
+  for (int i = 1; i < anchors; ++i) {
+    const float jitter = _is3d ? _config.initialJitter : _config.initialJitter2d;
+    const float s = fmath::fastExp(jitter * _rng.gaussian());
+    const Box j{b.x + jitter * b.w * _rng.gaussian(), b.y + jitter * b.h * _rng.gaussian(), b.w * s,
                 b.h * s};
     addExample(j, true);
   }

@@ -111,25 +111,30 @@ TEST_CASE("in 2D, corner-anchored negatives and the template anchor hold a still
   TrackerConfig centred = shipped, anchored = shipped;
   centred.anchoredNegatives2d = false;
   anchored.scaleAnchor2d = true;
-  TrackerConfig sizeOnly = anchored;
+  // The shift step is on in best only (2D here: no depth), so it is measured there.
+  const TrackerConfig best = presetConfig(Preset::Best);
+  TrackerConfig sizeOnly = best;
   sizeOnly.templateShiftStep = 0.f;
-  const uint64_t seeds = 3;  // ~25 s under ASan
+  const uint64_t seeds = 3;
+  constexpr int kWholeH = 411;  // every frame after the first
   double corner = 0.0, centre = 0.0, anchor = 0.0, shiftPx = 0.0, noShiftPx = 0.0;
   for (uint64_t seed = 1; seed <= seeds; ++seed) {
     corner += boxError(avi, shipped, seed, 150).size;
     centre += boxError(avi, centred, seed, 150).size;
-    const BoxError a = boxError(avi, anchored, seed, 150);
-    anchor += a.size;
-    shiftPx += a.centre;
-    noShiftPx += boxError(avi, sizeOnly, seed, 150).centre;
+    anchor += boxError(avi, anchored, seed, 150).size;
+    shiftPx += boxError(avi, best, seed, kWholeH).centre;
+    noShiftPx += boxError(avi, sizeOnly, seed, kWholeH).centre;
   }
   INFO("mean |ln size error|: corner-anchored negatives " << corner / seeds << ", centred only "
                                                           << centre / seeds << ", with the anchor "
                                                           << anchor / seeds);
   INFO("mean centre error [px]: template anchor " << shiftPx / seeds << ", its size ladder only "
                                                   << noShiftPx / seeds);
-  // Measured (seeds 1-3): 0.042 against 0.048 (0.044 against 0.054 before the weak
-  // classifiers' density floor, which also steadies the centred variant).
+  // Measured (seeds 1-3): size 0.026 against 0.050, with the anchor 0.024 (with 9 initial
+  // positives 3% apart: 0.042 against 0.048). The centre is measured over the whole video:
+  // since the 17 closer initial positives the classifier alone holds it to under a pixel
+  // for the first 100 frames, and it drifts after the exposure change there: 0.80 px with
+  // the shift step, 1.24 without.
   CHECK(corner < 0.9 * centre);
   CHECK(anchor / seeds < 0.05);
   CHECK(shiftPx < 0.8 * noShiftPx);

@@ -62,11 +62,15 @@ struct TrackerConfig {
 
   // Implementation parameters (docs/algorithm.md), the same in every preset
   Estimator estimator = Estimator::WeightedMean;
-  float weightGain = 12.f;           // lambda: particle weight = exp(lambda * c), c in [-1, 1]
-  float learnConfidence = 0.55f;     // update gate: confidence (c + 1) / 2 at the estimate >= this
-  float learnConcentration = 0.5f;   // ... and weighted mean overlap of particles with it >= this
-  int negativesPerUpdate = 10;       // negatives added per learning step
-  int initialPositives = 9;          // the init box plus slightly shifted copies, kept for good
+  float weightGain = 12.f;          // lambda: particle weight = exp(lambda * c), c in [-1, 1]
+  float learnConfidence = 0.55f;    // update gate: confidence (c + 1) / 2 at the estimate >= this
+  float learnConcentration = 0.5f;  // ... and weighted mean overlap of particles with it >= this
+  int negativesPerUpdate = 10;      // negatives added per learning step
+  int initialPositives = 9;         // the init box plus slightly shifted copies, kept for good
+  float initialJitter = 0.03f;      // ... shifted and rescaled by N(0, this^2) of the side
+  // 2D, where the classifier alone places the window to the pixel: more, closer copies
+  int initialPositives2d = 17;
+  float initialJitter2d = 0.015f;
   float anchorWeight = 2.f;          // boosting weight of a kept initial positive vs a recent one
   int boostCandidates = 48;          // GentleBoost rounds after the first search these best
   int boostRefreshRounds = 12;       // ... and every this many rounds the whole pool again
