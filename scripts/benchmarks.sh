@@ -56,7 +56,7 @@ status=0
 # The commands as the doc shows them (paths relative to the repository).
 bobot_seqs=("$BOBOT/Vid_C_juice.avi" "$BOBOT/Vid_E_person_partially_occluded.avi"
             "$BOBOT/Vid_H_panda.avi")
-bobot_cmd=("$BENCH" "${bobot_seqs[@]}" --tracker cuetrack,opencv-all --config 1.1,1.2,1.3,1.4,best
+bobot_cmd=("$BENCH" "${bobot_seqs[@]}" --tracker cuetrack,opencv-all --config 1.1,1.2,1.3,1.4,best,best-noanchorcloud
            --runs "$RUNS" --peer-runs "$PEER_RUNS" "${frames_opt[@]}" --paper table1
            --markdown "$OUT/bobot.md" --json "$OUT/bobot.json" --plots "$OUT/plots"
            --csv "$OUT/csv" --results "$OUT/results")

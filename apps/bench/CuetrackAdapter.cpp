@@ -16,7 +16,8 @@ Tracker& sharedTracker() {
 
 // Ablations of the beyond-the-paper switches: "<preset>-<switch off>", e.g.
 // best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
-// best-noanchor (no 2D scale anchor), best-nomodeguard (the weighted mean even when the
+// best-noanchor (no 2D scale anchor), best-noanchorcloud (the anchor corrects the reported
+// box only, not the particles), best-nomodeguard (the weighted mean even when the
 // cloud has split), best-norefine (search windows not hill-climbed while lost),
 // best-nofastmotion (no jumping particles, no coasting over dropped frames).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
@@ -27,6 +28,7 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
   static const Off kOffs[] = {{"-nolost", &TrackerConfig::lostDetection},
                               {"-fixedsize", &TrackerConfig::adaptCylinderSize},
                               {"-noanchor", &TrackerConfig::scaleAnchor2d},
+                              {"-noanchorcloud", &TrackerConfig::anchorMovesCloud},
                               {"-nomodeguard", &TrackerConfig::modeGuard},
                               {"-norefine", &TrackerConfig::refineSearch},
                               {"-nofastmotion", &TrackerConfig::fastMotion}};

@@ -53,8 +53,9 @@ const char* usage() {
          "                     (repeatable; default cuetrack)\n"
          "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best, or a\n"
          "                     preset with a beyond-the-paper switch off: best-nolost,\n"
-         "                     best-fixedsize, best-noanchor, best-nomodeguard,\n"
-         "                     best-norefine, best-nofastmotion (repeatable; default best)\n"
+         "                     best-fixedsize, best-noanchor, best-noanchorcloud,\n"
+         "                     best-nomodeguard, best-norefine, best-nofastmotion\n"
+         "                     (repeatable; default best)\n"
          "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
          "  --peer-runs N      runs for the OpenCV peers (default: --runs)\n"
          "  --seed S           first seed (default 1)\n"
@@ -136,7 +137,8 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
         if (!isCuetrackConfig(c)) {
           *err = "--config: unknown configuration '" + c +
                  "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
-                 "best-noanchor, best-nomodeguard, best-norefine, best-nofastmotion)";
+                 "best-noanchor, best-noanchorcloud, best-nomodeguard, best-norefine, "
+                 "best-nofastmotion)";
           return false;
         }
         configs.push_back(c);

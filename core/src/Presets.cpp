@@ -53,6 +53,7 @@ TrackerConfig presetConfig(Preset preset) {
       c.lostDetection = true;
       c.fallbackTo2d = true;
       c.scaleAnchor2d = true;
+      c.anchorMovesCloud = true;
       c.modeGuard = true;
       c.refineSearch = true;
       c.fastMotion = true;

@@ -112,7 +112,11 @@ TEST_CASE("in 2D, corner-anchored negatives and the template anchor hold a still
   centred.anchoredNegatives2d = false;
   anchored.scaleAnchor2d = true;
   // The shift step is on in best only (2D here: no depth), so it is measured there.
-  const TrackerConfig best = presetConfig(Preset::Best);
+  // Measured with the anchor correcting the reported box alone: a cloud that follows it
+  // (the next test) holds the centre closer without the shift step too (0.99 px), and the
+  // shift step's own part would drown in the run-to-run spread of three seeds.
+  TrackerConfig best = presetConfig(Preset::Best);
+  best.anchorMovesCloud = false;
   TrackerConfig sizeOnly = best;
   sizeOnly.templateShiftStep = 0.f;
   const uint64_t seeds = 3;
@@ -138,6 +142,34 @@ TEST_CASE("in 2D, corner-anchored negatives and the template anchor hold a still
   CHECK(corner < 0.9 * centre);
   CHECK(anchor / seeds < 0.05);
   CHECK(shiftPx < 0.8 * noShiftPx);
+}
+
+TEST_CASE("in 2D, a cloud that follows the template anchor keeps a still target's size",
+          "[core][e2e][shared]") {
+  // BoBoT H after the exposure change at frame ~100: the backlit panda's classifier pulls
+  // each frame's mean 3-5% small, and the anchor, applied to the reported box alone, asks
+  // for larger on nearly every frame without ever catching up. With the cloud moved by
+  // part of each correction (best), the correction stays in the state.
+  const std::string avi = test::sharedDataDir() + "/bobot/Vid_H_panda.avi";
+  if (!test::pathExists(avi)) {
+    WARN("shared data absent (" << avi << "): skipped");
+    return;
+  }
+  const TrackerConfig best = presetConfig(Preset::Best);
+  REQUIRE(best.anchorMovesCloud);
+  TrackerConfig reportOnly = best;
+  reportOnly.anchorMovesCloud = false;
+  constexpr int kWholeH = 411;
+  const uint64_t seeds = 3;
+  double follow = 0.0, report = 0.0;
+  for (uint64_t seed = 1; seed <= seeds; ++seed) {
+    follow += boxError(avi, best, seed, kWholeH).size;
+    report += boxError(avi, reportOnly, seed, kWholeH).size;
+  }
+  INFO("mean |ln size error| over H: cloud follows the anchor "
+       << follow / seeds << ", reported box only " << report / seeds);
+  // Measured (seeds 1-3): 0.026 against 0.041.
+  CHECK(follow < 0.8 * report);
 }
 
 TEST_CASE("best keeps a real chair's box on real Kinect depth", "[core][e2e][shared]") {

@@ -81,6 +81,9 @@ class Tracker {
                     bool wasLost);                 // motion (+ search while lost); the ROI
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
   Estimate estimate(bool wasLost);                 // weights and the estimate
+  // anchorMovesCloud: every particle shifted and rescaled by templateCloudGain of the
+  // template anchor's correction from `from` to `to`.
+  void followAnchor(const Box& from, const Box& to);
   // Lost detection, the update gate and learning; true when learnt.
   bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi, float dtS);
 
@@ -141,7 +144,7 @@ class Tracker {
   CylinderSizer _sizer{};  // adaptCylinderSize: D, H and the centre follow the depth silhouette
   uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
 };
-// Everything together (Config.hpp's list of big buffers plus the small ones): 10,531,752 B
+// Everything together (Config.hpp's list of big buffers plus the small ones): 10,531,768 B
 // on x86-64 at 640x480, within the 16 MiB.
 static_assert(sizeof(Tracker) <= kTrackerBudgetBytes, "the tracker must fit its 16 MiB budget");
 

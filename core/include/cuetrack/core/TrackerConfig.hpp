@@ -39,6 +39,7 @@ struct TrackerConfig {
   bool lostDetection = false;      // declare lost, freeze learning, re-acquire
   bool fallbackTo2d = false;       // 3D/depth requested but the frame has none: run 2D RGB
   bool scaleAnchor2d = false;      // 2D: size and centre follow the init template's best match
+  bool anchorMovesCloud = false;   // scaleAnchor2d: the particles follow part of its correction
   bool modeGuard = false;     // a split cloud: estimate from the best particle's mode, not the mean
   bool refineSearch = false;  // lostDetection: the best fresh search windows climb to a peak
   // Fast targets and slow or dropped frames. After a learnt frame every jumpEvery-th
@@ -108,6 +109,11 @@ struct TrackerConfig {
   // templateShiftGain of the way (0 step: size only).
   float templateShiftStep = 0.02f;
   float templateShiftGain = 0.6f;
+  // anchorMovesCloud: on a frame whose estimate is confident enough to learn from
+  // (learnConfidence), every particle is rescaled and shifted by this part of the
+  // anchor's correction, so the correction stays in the state instead of being applied
+  // afresh to each frame's classifier-only mean (docs/algorithm.md).
+  float templateCloudGain = 0.5f;
   // modeGuard (WeightedMean only): when the weighted mean's own score is this far below the
   // best particle's, and that particle's confidence (c + 1) / 2 is at least the minimum, the
   // cloud has split over two places and the mean lies between them; the estimate is then
