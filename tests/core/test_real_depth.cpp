@@ -87,6 +87,16 @@ BoxError boxError(const std::string& avi, const TrackerConfig& cfg, uint64_t see
   return e;
 }
 
+// BoBoT H (the still panda), or "" with a warning when the shared data is absent.
+std::string pandaVideo() {
+  const std::string avi = test::sharedDataDir() + "/bobot/Vid_H_panda.avi";
+  if (test::pathExists(avi)) return avi;
+  WARN("shared data absent (" << avi << "): skipped");
+  return "";
+}
+
+constexpr int kWholeH = 411;  // BoBoT H: every frame after the first
+
 }  // namespace
 
 TEST_CASE("the allocation counter sees allocations in this program (positive control)", "[alloc]") {
@@ -102,11 +112,8 @@ TEST_CASE("in 2D, corner-anchored negatives and the template anchor hold a still
   // anchored at the estimate's corners and edges (1.1 as shipped) must drift less, and
   // with the template anchor on top (best's 2D) the size must stay within a few percent;
   // the anchor's shift step must hold the centre closer than its size ladder alone.
-  const std::string avi = test::sharedDataDir() + "/bobot/Vid_H_panda.avi";
-  if (!test::pathExists(avi)) {
-    WARN("shared data absent (" << avi << "): skipped");
-    return;
-  }
+  const std::string avi = pandaVideo();
+  if (avi.empty()) return;
   const TrackerConfig shipped = presetConfig(Preset::Test1_1);
   TrackerConfig centred = shipped, anchored = shipped;
   centred.anchoredNegatives2d = false;
@@ -120,7 +127,6 @@ TEST_CASE("in 2D, corner-anchored negatives and the template anchor hold a still
   TrackerConfig sizeOnly = best;
   sizeOnly.templateShiftStep = 0.f;
   const uint64_t seeds = 3;
-  constexpr int kWholeH = 411;  // every frame after the first
   double corner = 0.0, centre = 0.0, anchor = 0.0, shiftPx = 0.0, noShiftPx = 0.0;
   for (uint64_t seed = 1; seed <= seeds; ++seed) {
     corner += boxError(avi, shipped, seed, 150).size;
@@ -150,16 +156,12 @@ TEST_CASE("in 2D, a cloud that follows the template anchor keeps a still target'
   // each frame's mean 3-5% small, and the anchor, applied to the reported box alone, asks
   // for larger on nearly every frame without ever catching up. With the cloud moved by
   // part of each correction (best), the correction stays in the state.
-  const std::string avi = test::sharedDataDir() + "/bobot/Vid_H_panda.avi";
-  if (!test::pathExists(avi)) {
-    WARN("shared data absent (" << avi << "): skipped");
-    return;
-  }
+  const std::string avi = pandaVideo();
+  if (avi.empty()) return;
   const TrackerConfig best = presetConfig(Preset::Best);
   REQUIRE(best.anchorMovesCloud);
   TrackerConfig reportOnly = best;
   reportOnly.anchorMovesCloud = false;
-  constexpr int kWholeH = 411;
   const uint64_t seeds = 3;
   double follow = 0.0, report = 0.0;
   for (uint64_t seed = 1; seed <= seeds; ++seed) {
