@@ -6,10 +6,7 @@ namespace cuetrack {
 
 NegativeSampler::Params NegativeSampler::paramsOf(const TrackerConfig& c) {
   Params p;
-  p.nearOverlap = c.nearNegativeOverlap;
-  p.shrunkScale = c.shrunkNegativeScale;
   p.anchored2d = c.anchoredNegatives2d;
-  p.shiftedFraction = c.shiftedNegativeFraction;
   return p;
 }
 

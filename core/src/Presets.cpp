@@ -59,7 +59,6 @@ TrackerConfig presetConfig(Preset preset) {
       c.fastMotion = true;
       c.numWeakClassifiers2d = 32;  // RGB only: as the paper's RGB tests (1.x)
       c.lostAfter2d = 25;           // RGB only: ~1 s of low confidence (partial occlusions)
-      c.estimator = Estimator::WeightedMean;
       break;
   }
   return c;

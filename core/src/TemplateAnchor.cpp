@@ -53,13 +53,7 @@ bool grayCells(const FrameTables& t, const Box& win, float* out) {
 
 TemplateAnchor::Params TemplateAnchor::paramsOf(const TrackerConfig& c) {
   Params p;
-  p.scaleSteps =
-      c.templateScaleSteps > kMaxTemplateScaleSteps ? kMaxTemplateScaleSteps : c.templateScaleSteps;
-  p.scaleStep = c.templateScaleStep;
-  p.minNcc = c.templateMinNcc;
-  p.gain = c.templateGain;
-  p.shiftStep = c.templateShiftStep;
-  p.shiftGain = c.templateShiftGain;
+  if (!c.templateShift) p.shiftStep = 0.f;
   return p;
 }
 

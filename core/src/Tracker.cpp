@@ -1,23 +1,10 @@
 #include "cuetrack/core/Tracker.hpp"
 
+#include "cuetrack/core/Tuning.hpp"
+
 namespace cuetrack {
 
 namespace {
-constexpr float kRoiMargin = 1.6f;  // ROI: particle boxes + this x mean size per side
-constexpr float kLostSpread = 3.f;  // motion noise gain while lost
-// Re-acquisition while lost: every kSearchEvery-th particle is drawn anew each frame,
-// half anywhere in the image, half around the last confidently learnt estimate within
-// a radius that grows by kSearchGrowth window sides per frame lost; the rest of the
-// cloud keeps following the best candidate so the detector can confirm it.
-constexpr int kSearchEvery = 2;
-constexpr float kSearchGrowth = 0.25f;
-constexpr float kFramePeriod30S = 1.f / 30.f;  // learnDepthFollow is per frame at 30 fps
-constexpr float kDepthJumpRatio = 0.75f;  // 3D: estimate depth / last learnt depth (or inverse)
-constexpr float kSearchInside = 0.8f;     // while lost, windows must lie this much inside
-// refineSearch: hill-climbing steps of a search window, first this part of its side, halved
-// when no neighbour scores higher; this many steps.
-constexpr float kRefineStep = 0.12f;
-constexpr int kRefineSteps = 6;
 constexpr float kDefaultDtS = 1.f / 30.f;
 float frameDtS(uint64_t last, uint64_t now) {
   if (now <= last) return kDefaultDtS;
@@ -78,24 +65,16 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
   if (_config.numWeakClassifiers2d < 0) _config.numWeakClassifiers2d = 0;
   if (_config.numWeakClassifiers2d > kMaxWeakClassifiers)
     _config.numWeakClassifiers2d = kMaxWeakClassifiers;
-  if (_config.numTrainingExamples > kMaxTrainingExamples)
-    _config.numTrainingExamples = kMaxTrainingExamples;
-  if (_config.numTrainingExamples < 8) _config.numTrainingExamples = 8;
   if (!_config.useGray && !_config.useColour && !_config.useDepth) _config.useGray = true;
-  if (_config.jumpEvery < 2) _config.jumpEvery = 2;  // particle 0 never jumps
   _seed = seed;
   _clock = clock;
-  _gate.minConfidence = _config.learnConfidence;
-  _gate.minConcentration = _config.learnConcentration;
-  _motion3d.velocityNoiseMm2PerS2 = _config.velocityNoiseMm2PerS2;
-  _motion2d.positionNoise = _config.positionNoise2d;
-  _motion2d.scaleNoise = _config.scaleNoise2d;
-  _motion2d.aspectNoise = _config.aspectNoise2d;
-  _motion3d.sizeNoise = _config.adaptCylinderSize ? _config.cylinderSizeNoise : 0.f;
-  _sizeFilter.configure(_config.sizeGain, _config.sizeRateGain);
+  _motion3d.sizeNoise = _config.adaptCylinderSize ? tuning::cylinder::kSizeNoise : 0.f;
+  _sizeFilter.configure(tuning::size2d::kGain, tuning::size2d::kRateGain);
   _templateAnchor.configure(TemplateAnchor::paramsOf(_config));
-  _sizer.configure(_config.cylinderSizeGain, _config.cylinderCentreGain);
+  _sizer.configure(tuning::cylinder::kSizeGain, tuning::cylinder::kCentreGain);
   _negatives.configure(NegativeSampler::paramsOf(_config));
+  _fast.configure(_config.fastMotion);
+  _depthGuard.configure(_config.learnDepthCheck);
   reset();
 }
 
@@ -124,8 +103,7 @@ Box Tracker::clampToImage(const Box& b) const {
 }
 
 Box Tracker::particleBox(const Particle& q) const {
-  if (_is3d) return projectCylinder(q, _k);
-  return Box{q.p[0] - 0.5f * q.size[0], q.p[1] - 0.5f * q.size[1], q.size[0], q.size[1]};
+  return particleWindow(q, _is3d, _k);
 }
 
 bool Tracker::medianDepthMm(const Frame& frame, const Box& box, float* out) {
@@ -152,104 +130,6 @@ bool Tracker::medianDepthMm(const Frame& frame, const Box& box, float* out) {
     }
   }
   return false;
-}
-
-Particle Tracker::searchParticle(bool wide) {
-  Particle q = _lastEstimate;
-  q.v[0] = q.v[1] = q.v[2] = 0.f;
-  const float iw = static_cast<float>(_imageW), ih = static_cast<float>(_imageH);
-  float u, v;
-  if (wide) {
-    u = _rng.uniform(0.f, iw);
-    v = _rng.uniform(0.f, ih);
-  } else {
-    const Box a = particleBox(_lastEstimate);
-    const float r =
-        fmath::sqrtf(a.w * a.h) * (0.5f + kSearchGrowth * static_cast<float>(_lostFrames));
-    u = fmath::clampf(a.x + 0.5f * a.w + r * _rng.gaussianFast(), 0.f, iw);
-    v = fmath::clampf(a.y + 0.5f * a.h + r * _rng.gaussianFast(), 0.f, ih);
-  }
-  if (_is3d) {
-    // At the last depth on the ray through (u, v): the depth correction then puts it on
-    // the surface measured there, at the size the target would have there.
-    const float z = q.p[2];
-    q.p[0] = (u - _k.cx) * z / _k.fx;
-    q.p[1] = (v - _k.cy) * z / _k.fy;
-  } else {
-    const float sc = fmath::fastExp(0.15f * _rng.gaussianFast());
-    q.p[0] = u;
-    q.p[1] = v;
-    q.size[0] *= sc;
-    q.size[1] *= sc;
-  }
-  return q;
-}
-
-void Tracker::refineSearchWindows(int n, const PixelRect& roi) {
-  // The best scored fresh search windows (every kSearchEvery-th particle), best first.
-  int top[kMaxSearchRefineWindows];
-  int k = _config.searchRefineWindows;
-  if (k > kMaxSearchRefineWindows) k = kMaxSearchRefineWindows;
-  int nt = 0;
-  for (int i = 0; i < n; i += kSearchEvery) {
-    if (_valid[i] == 0) continue;
-    int j;
-    if (nt < k)
-      j = nt++;
-    else if (_scores[i] > _scores[top[k - 1]])
-      j = k - 1;
-    else
-      continue;
-    while (j > 0 && _scores[top[j - 1]] < _scores[i]) {
-      top[j] = top[j - 1];
-      --j;
-    }
-    top[j] = i;
-  }
-  for (int t = 0; t < nt; ++t) {
-    const int i = top[t];
-    const Box start = _boxes[i];
-    Box b = start;
-    float score = _scores[i];
-    float step = kRefineStep;
-    for (int s = 0; s < kRefineSteps; ++s) {
-      const float dx[4] = {step * b.w, -step * b.w, 0.f, 0.f};
-      const float dy[4] = {0.f, 0.f, step * b.h, -step * b.h};
-      int best = -1;
-      float bestScore = score;
-      for (int m = 0; m < 4; ++m) {
-        const Box c{b.x + dx[m], b.y + dy[m], b.w, b.h};
-        const PixelRect r = clipBox(c, _imageW, _imageH);
-        if (static_cast<float>(r.width() * r.height()) < kSearchInside * c.area() ||
-            r.x0 < roi.x0 || r.y0 < roi.y0 || r.x1 > roi.x1 || r.y1 > roi.y1)
-          continue;
-        const float sc = _strong.evaluate(_channels.tables(), c);
-        if (sc > bestScore) {
-          bestScore = sc;
-          best = m;
-        }
-      }
-      if (best < 0) {
-        step *= 0.5f;
-        continue;
-      }
-      b.x += dx[best];
-      b.y += dy[best];
-      score = bestScore;
-    }
-    // Move the particle by the same image shift: along x, y at its depth in 3D.
-    Particle& q = _filter[i];
-    const float du = b.x - start.x, dv = b.y - start.y;
-    if (_is3d) {
-      q.p[0] += du * q.p[2] / _k.fx;
-      q.p[1] += dv * q.p[2] / _k.fy;
-    } else {
-      q.p[0] += du;
-      q.p[1] += dv;
-    }
-    _boxes[i] = particleBox(q);
-    _scores[i] = score;
-  }
 }
 
 void Tracker::addExample(const Box& win, bool positive) {
@@ -345,7 +225,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     q.size[1] = b.h;
   }
   _lastEstimate = q;
-  _depthRefMm = _learnRefMm = _prevDepthMm = q.p[2];
+  _depthGuard.reset(q.p[2]);
   _lastBox = b;
   _sizeFilter.reset(b);
 
@@ -354,23 +234,23 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
 
   if (!_pool.build(_config.useGray, _depthFeatures, _config.useColour, _config.sampling, _rng))
     return InitError::BoxTooSmall;  // cannot happen with kMaxPoolFeatures (static_assert-backed)
-  const int anchors = _is3d ? _config.initialPositives : _config.initialPositives2d;
-  _set.reset(_config.numTrainingExamples, anchors);
+  const int anchors =
+      _is3d ? tuning::training::kInitialPositives3d : tuning::training::kInitialPositives2d;
+  _set.reset(tuning::training::kExamples, anchors);
   addExample(b, true);  // slot 0: the anchor
   _templateAnchor.clear();
   if (!_is3d && _config.scaleAnchor2d) _templateAnchor.capture(_channels.tables(), b);
   for (int i = 1; i < anchors; ++i) {
-    const float jitter = _is3d ? _config.initialJitter : _config.initialJitter2d;
+    const float jitter =
+        _is3d ? tuning::training::kInitialJitter3d : tuning::training::kInitialJitter2d;
     const float s = fmath::fastExp(jitter * _rng.gaussian());
     const Box j{b.x + jitter * b.w * _rng.gaussian(), b.y + jitter * b.h * _rng.gaussian(), b.w * s,
                 b.h * s};
     addExample(j, true);
   }
-  addNegatives(b, _set.numNegatives() + _config.numTrainingExamples,
-               roi);  // fill the negative FIFO
+  addNegatives(b, _set.numNegatives() + tuning::training::kExamples, roi);  // fill the FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
-  _strong.train(_pool, _cache, _set, _numWeak, _featureErrors, _config.boostCandidates,
-                _config.anchorWeight, _config.boostRefreshRounds);
+  train();
 
   _sizer.clear();
   if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
@@ -378,45 +258,44 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _filter.setSize(_config.numParticles);
   _filter.fill(q);
   _lastTimeUs = frame.timeUs;
-  _period.clear();
-  _jumpArmed = _config.fastMotion;
+  _fast.start();
   _state = TrackState::Tracking;
   return InitError::None;
 }
 
 void Tracker::learn(const Box& estimate, const PixelRect& roi) {
   addExample(estimate, true);
-  addNegatives(estimate, _config.negativesPerUpdate, roi);
+  addNegatives(estimate, tuning::training::kNegativesPerUpdate, roi);
   if (_config.dynamicPool && _config.sampling == FeatureSampling::Sparse) {
     const int replaced = _pool.update(_featureErrors, _rng);
     if (replaced >= 0) _cache.refreshFeature(replaced, _pool, _set);
   }
-  _strong.train(_pool, _cache, _set, _numWeak, _featureErrors, _config.boostCandidates,
-                _config.anchorWeight, _config.boostRefreshRounds);
+  train();
+}
+
+void Tracker::train() {
+  _strong.train(_pool, _cache, _set, _numWeak, _featureErrors, tuning::training::kBoostCandidates,
+                tuning::training::kAnchorWeight, tuning::training::kBoostRefreshRounds);
 }
 
 PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
-  const float spread = wasLost ? kLostSpread : 1.f;
-  // 3D at 30 fps the AR(1) model keeps up (jumps there cost accuracy: docs/algorithm.md).
-  _jumping3d = _is3d && _jumpArmed && dtS > _config.jumpMinDtS;
+  const float spread = wasLost ? tuning::kLostSpread : 1.f;
+  _fast.beginFrame(_is3d, dtS);
+  const SearchView view = searchView();
   const int n = _filter.size();
   PixelRect roi{};
   float meanW = 0.f, meanH = 0.f;
   for (int i = 0; i < n; ++i) {
     Particle& q = _filter[i];
-    if (wasLost && i % kSearchEvery == 0) q = searchParticle((i / kSearchEvery) % 2 == 0);
+    if (wasLost && LostSearch::drawsAnew(i))
+      q = LostSearch::draw(i, _lastEstimate, _lostFrames, view, _rng);
     if (_is3d) {
       _motion3d.predict(q, _rng, dtS, spread);
-      if (_jumping3d && i % _config.jumpEvery == 1) {
-        _preJump[i / _config.jumpEvery] = q;
-        _motion3d.jump(q, _rng, dtS, _config.jumpScale);
-      }
+      _fast.jump3d(i, q, _motion3d, _rng, dtS);
       keepInView(q, _k, _imageW, _imageH);
     } else {
       _motion2d.predict(q, _rng, spread, framesElapsed);
-      // Only while the tracker is sure of the target: jumps during an occlusion would
-      // carry the cloud off to whatever looks most like it.
-      if (_jumpArmed && i % _config.jumpEvery == 1) _motion2d.jump(q, _rng, _config.jumpScale);
+      _fast.jump2d(i, q, _motion2d, _rng);
       // Keep windows sane and near the image.
       const Box c = clampToImage(particleBox(q));
       q.p[0] = c.x + 0.5f * c.w;
@@ -432,10 +311,10 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
   }
   meanW /= static_cast<float>(n);
   meanH /= static_cast<float>(n);
-  roi = clipBox(Box{static_cast<float>(roi.x0) - kRoiMargin * meanW,
-                    static_cast<float>(roi.y0) - kRoiMargin * meanH,
-                    static_cast<float>(roi.width()) + 2.f * kRoiMargin * meanW,
-                    static_cast<float>(roi.height()) + 2.f * kRoiMargin * meanH},
+  constexpr float m = tuning::kRoiMarginSides;
+  roi = clipBox(Box{static_cast<float>(roi.x0) - m * meanW, static_cast<float>(roi.y0) - m * meanH,
+                    static_cast<float>(roi.width()) + 2.f * m * meanW,
+                    static_cast<float>(roi.height()) + 2.f * m * meanH},
                 _imageW, _imageH);
   if (roi.width() < 2 || roi.height() < 2) roi = PixelRect{0, 0, _imageW, _imageH};
   return roi;
@@ -447,12 +326,7 @@ void Tracker::score(const PixelRect& roi, bool wasLost) {
     const Box& b = _boxes[i];
     _valid[i] = !b.empty() && b.w >= 4.f && b.h >= 4.f && b.x + b.w > 0.f && b.y + b.h > 0.f &&
                 b.x < static_cast<float>(_imageW) && b.y < static_cast<float>(_imageH);
-    // Searching: a window must see most of the target to re-detect it (windows half
-    // outside the image score on whatever their features read there).
-    if (wasLost && _valid[i] != 0) {
-      const PixelRect c = clipBox(b, _imageW, _imageH);
-      _valid[i] = static_cast<float>(c.width() * c.height()) >= kSearchInside * b.area();
-    }
+    if (wasLost && _valid[i] != 0) _valid[i] = LostSearch::insideEnough(b, _imageW, _imageH);
   }
   // Visit particles row band by row band (counting sort on the window's top edge, 8 px
   // bands): the feature reads of consecutive particles then share cache lines.
@@ -469,15 +343,15 @@ void Tracker::score(const PixelRect& roi, bool wasLost) {
     for (int i = 0; i < n; ++i) _order[start[_band[i]]++] = static_cast<uint16_t>(i);
   }
   _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores, _order);
-  // Searching: a fresh window scores high only within a few % of the reappeared target's
-  // window; one that lands 10-30% off scores below the background's best and is lost at
-  // resampling. The best few climb to their peak first (docs/algorithm.md).
-  if (wasLost && _config.refineSearch && _config.searchRefineWindows > 0)
-    refineSearchWindows(n, roi);
+  if (wasLost && _config.refineSearch) {
+    const FrameTables& t = _channels.tables();
+    LostSearch::refine(n, roi, searchView(), _filter, _boxes, _scores, _valid,
+                       [&](const Box& b) { return _strong.evaluate(t, b); });
+  }
 }
 
 void Tracker::followAnchor(const Box& from, const Box& to) {
-  const float g = _config.templateCloudGain;
+  constexpr float g = tuning::templateAnchor::kCloudGain;
   if (!(g > 0.f) || from.empty() || to.empty()) return;
   const float sw = fmath::fastExp(g * fmath::fastLog(to.w / from.w));
   const float sh = fmath::fastExp(g * fmath::fastLog(to.h / from.h));
@@ -501,31 +375,17 @@ Tracker::Estimate Tracker::estimate(bool wasLost) {
   for (int i = 0; i < n; ++i)
     if (_scores[i] > cMax) cMax = _scores[i];
   float* w = _filter.weights();
-  for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(_config.weightGain * (_scores[i] - cMax));
+  for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(tuning::kWeightGain * (_scores[i] - cMax));
 
+  // The weighted mean (the paper takes the heaviest particle: docs/experiments.md).
   Estimate e;
-  float c;
-  if (_config.estimator == Estimator::MaxWeight) {
-    const int best = _filter.argmaxWeight();
-    e.particle = _filter[best];
-    e.box = _boxes[best];
-    c = _scores[best];
-  } else {
-    e.particle = _filter.weightedMean();
+  e.particle = _filter.weightedMean();
+  e.box = particleBox(e.particle);
+  float c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
+  if (_config.modeGuard && ModeGuard::split(c, cMax)) {
+    e.particle = _modeGuard.modeMean(_filter, _boxes);
     e.box = particleBox(e.particle);
     c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
-    if (_config.modeGuard && c < cMax - _config.modeGuardMargin &&
-        0.5f * (cMax + 1.f) >= _config.modeGuardMinConfidence) {
-      // The mean scores far below a confident best particle: the cloud has split (the
-      // target and a look-alike beside it) and the mean lies between; take the best
-      // particle's mode. (Not when no particle is confident: with the target hidden, the
-      // mean's low score is what tells lost detection it is gone.)
-      const Box top = _boxes[_filter.argmaxWeight()];
-      for (int i = 0; i < n; ++i) _inMode[i] = overlap(_boxes[i], top) >= 0.5f ? 1 : 0;
-      e.particle = _filter.weightedMean(_inMode);
-      e.box = particleBox(e.particle);
-      c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
-    }
   }
   if (_templateAnchor.active() && !_is3d && !e.box.empty() && !wasLost) {
     const Box mean = e.box;
@@ -535,7 +395,7 @@ Tracker::Estimate Tracker::estimate(bool wasLost) {
     // template asking for larger on nearly every frame); moved with it, the cloud keeps
     // it. Only when the classifier is sure enough to learn: after a sudden exposure
     // change the match is all there is, and it should not carry the cloud.
-    if (_config.anchorMovesCloud && 0.5f * (c + 1.f) >= _config.learnConfidence)
+    if (_config.anchorMovesCloud && 0.5f * (c + 1.f) >= tuning::kLearnConfidence)
       followAnchor(mean, e.box);
   }
   if (!_is3d && _sizeFilter.enabled() && !e.box.empty()) e.box = _sizeFilter.filter(e.box);
@@ -557,10 +417,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     // confirmed: the depth correction has put the cloud on something passing in front,
     // or on the background (either can look enough like the target to keep the
     // confidence above the lost threshold). Counts as a miss, and is not learnt.
-    const float zRef = _depthRefMm;
-    const Particle& est = e.particle;
-    occluded = _is3d && !wasLost && !_lost.onProbation() &&
-               (est.p[2] < kDepthJumpRatio * zRef || kDepthJumpRatio * est.p[2] > zRef);
+    occluded = _is3d && !wasLost && !_lost.onProbation() && _depthGuard.jumped(e.particle.p[2]);
     _state = _lost.step(_state, occluded ? 0.f : e.confidence);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
   }
@@ -570,12 +427,11 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   // 3D: an estimate well off the confirmed depth (though not yet a jump that counts as a
   // miss above) is not learnt either: it is the cloud sliding off a low-contrast target.
   const bool depthSettled =
-      !(_is3d && _config.lostDetection) || _config.learnMaxDepthChange <= 0.f ||
-      depthWithin(e.particle.p[2], _learnRefMm, 1.f + _config.learnMaxDepthChange);
+      !(_is3d && _config.lostDetection) || _depthGuard.learnable(e.particle.p[2]);
   if (!e.box.empty() && !occluded && !_lost.onProbation() && depthSettled &&
       _gate.open(e.confidence, e.concentration, _state)) {
     // Only on frames fit to learn: the estimate is then on the target.
-    if (_is3d && _config.adaptCylinderSize && _config.cylinderSizeGain > 0.f && frame.hasDepth() &&
+    if (_is3d && _config.adaptCylinderSize && frame.hasDepth() &&
         _sizer.follow(frame, _channels, _k, particleBox(e.particle), e.particle, _filter))
       e.box = particleBox(e.particle);
     _lastEstimate = e.particle;
@@ -586,16 +442,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   // moved in depth while hidden).
   const bool confirmed =
       learned || (_state == TrackState::Tracking && (wasLost || _lost.onProbation()));
-  if (confirmed) _depthRefMm = e.particle.p[2];
-  // The learning check's reference: confirmed as above, or following the estimate while it
-  // moves smoothly in depth (a target walking away while nothing is learnt), not when it
-  // jumps (a cloud sliding onto the wall); the allowance scales with the frame gap.
-  const float gap = dtS > kFramePeriod30S ? dtS / kFramePeriod30S : 1.f;
-  if (confirmed ||
-      (_state == TrackState::Tracking &&
-       depthWithin(e.particle.p[2], _prevDepthMm, 1.f + _config.learnDepthFollow * gap)))
-    _learnRefMm = e.particle.p[2];
-  _prevDepthMm = e.particle.p[2];
+  _depthGuard.update(e.particle.p[2], confirmed, _state == TrackState::Tracking, dtS);
   return learned;
 }
 
@@ -607,9 +454,7 @@ TrackResult Tracker::update(const Frame& frame) {
   if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
   const uint64_t t0 = now();
   const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
-  const int framesElapsed = _config.fastMotion && !_is3d && frame.timeUs > _lastTimeUs
-                                ? _period.framesElapsed(frame.timeUs - _lastTimeUs)
-                                : 1;
+  const int framesElapsed = _fast.framesElapsed(_is3d, _lastTimeUs, frame.timeUs);
   _lastTimeUs = frame.timeUs;
   const bool wasLost = _state == TrackState::Lost;
   if (wasLost) ++_lostFrames;
@@ -628,13 +473,8 @@ TrackResult Tracker::update(const Frame& frame) {
     }
     // A jump that landed on another surface (a twin further back, the background) is
     // undone: only the sideways search is wanted, not a new depth.
-    for (int i = 1; _jumping3d && i < n; i += _config.jumpEvery) {
-      const Particle& pre = _preJump[i / _config.jumpEvery];
-      const float dz = _filter[i].p[2] - pre.p[2];
-      if (dz <= _config.jumpMaxDepthChange * pre.p[2] &&
-          -dz <= _config.jumpMaxDepthChange * pre.p[2])
-        continue;
-      _filter[i] = pre;
+    for (int i = 1; _fast.jumping() && i < n; i += FastMotion::kEvery) {
+      if (!_fast.undoOffSurface(i, _filter[i])) continue;
       keepInView(_filter[i], _k, _imageW, _imageH);
       correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH);
       _boxes[i] = particleBox(_filter[i]);
@@ -646,7 +486,7 @@ TrackResult Tracker::update(const Frame& frame) {
   Estimate e = estimate(wasLost);
   const uint64_t t3 = now();
   const bool learned = decide(frame, e, wasLost, roi, dtS);
-  _jumpArmed = _config.fastMotion && learned;
+  _fast.endFrame(learned);
   const uint64_t t4 = now();
 
   _filter.resample(_rng);

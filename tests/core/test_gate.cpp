@@ -1,6 +1,7 @@
 // The update gate and the lost detector (Gate.hpp).
 #include <catch2/catch.hpp>
 
+#include "cuetrack/core/DepthGuard.hpp"
 #include "cuetrack/core/Gate.hpp"
 
 using namespace cuetrack;

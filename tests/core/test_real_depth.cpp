@@ -125,7 +125,7 @@ TEST_CASE("in 2D, corner-anchored negatives and the template anchor hold a still
   TrackerConfig best = presetConfig(Preset::Best);
   best.anchorMovesCloud = false;
   TrackerConfig sizeOnly = best;
-  sizeOnly.templateShiftStep = 0.f;
+  sizeOnly.templateShift = false;
   const uint64_t seeds = 3;
   double corner = 0.0, centre = 0.0, anchor = 0.0, shiftPx = 0.0, noShiftPx = 0.0;
   for (uint64_t seed = 1; seed <= seeds; ++seed) {

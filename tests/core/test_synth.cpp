@@ -248,7 +248,7 @@ TEST_CASE("best does not learn the wall when its cloud slides off a low-contrast
   // wall while scoring 0.69; learnt there, the classifier took the wall for the target
   // and the run was lost for good (24% hits). Measured 2026-11-23: 64% hits with the check.
   TrackerConfig unchecked = presetConfig(Preset::Best);
-  unchecked.learnMaxDepthChange = 0.f;
+  unchecked.learnDepthCheck = false;
   const Stats with = runSceneBackwards("untextured", presetConfig(Preset::Best), 7, 150);
   const Stats without = runSceneBackwards("untextured", unchecked, 7, 150);
   CHECK(with.hitRate() >= 0.5f);

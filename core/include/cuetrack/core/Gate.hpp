@@ -5,25 +5,20 @@
 #include <cstdint>
 
 #include "cuetrack/core/TrackResult.hpp"
+#include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
 
 // Learn only when the classifier is confident at the estimate and the particle
 // cloud agrees with it (weighted mean overlap of particles with the estimate).
 struct UpdateGate {
-  float minConfidence = 0.55f;
-  float minConcentration = 0.5f;
+  float minConfidence = tuning::kLearnConfidence;
+  float minConcentration = tuning::kLearnConcentration;
   bool open(float confidence, float concentration, TrackState state) const {
     return state == TrackState::Tracking && confidence >= minConfidence &&
            concentration >= minConcentration;
   }
 };
-
-// 3D: whether depth zMm lies within a factor `ratio` (>= 1) of the reference refMm,
-// either way; true while there is no reference (refMm <= 0).
-inline bool depthWithin(float zMm, float refMm, float ratio) {
-  return refMm <= 0.f || (zMm <= ratio * refMm && zMm * ratio >= refMm);
-}
 
 // Lost after `lostAfter` consecutive frames with confidence below `lostBelow`;
 // found again after `foundAfter` consecutive frames at or above the found threshold:
@@ -35,13 +30,13 @@ inline bool depthWithin(float zMm, float refMm, float ratio) {
 // probation is over.
 class LostDetector {
  public:
-  float lostBelow = 0.42f;
-  float foundAbove = 0.58f;
-  int lostAfter = 4;
-  int foundAfter = 2;
-  int probationFrames = 8;
-  float foundMargin = 0.15f;
-  float typicalRate = 0.1f;  // weight of the latest frame in the running mean (once warm)
+  float lostBelow = tuning::lost::kLostBelow;
+  float foundAbove = tuning::lost::kFoundAbove;
+  int lostAfter = tuning::lost::kLostAfter;
+  int foundAfter = tuning::lost::kFoundAfter;
+  int probationFrames = tuning::lost::kProbationFrames;
+  float foundMargin = tuning::lost::kFoundMargin;
+  float typicalRate = tuning::lost::kTypicalRate;  // weight of the latest frame (once warm)
 
   void reset() {
     _low = _high = _probation = _typicalCount = 0;

@@ -10,6 +10,7 @@
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
+#include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
 
@@ -19,10 +20,10 @@ class NegativeSampler {
   static constexpr float kMaxOverlap = 0.3f;  // ... overlapping the estimate less than this
 
   struct Params {
-    float nearOverlap = 0.5f;      // near misses overlap the estimate less than this
-    float shrunkScale = 0.65f;     // > 0: near misses scaled by this or 1/this
-    bool anchored2d = true;        // 2D: ... anchored at the start, centre or end per axis
-    float shiftedFraction = 0.2f;  // > 0: near misses shifted by this part of the side
+    float nearOverlap = tuning::negatives::kNearOverlap;  // near misses overlap less than this
+    float shrunkScale = tuning::negatives::kShrunkScale;  // > 0: near misses scaled by this or 1/this
+    bool anchored2d = true;  // 2D: ... anchored at the start, centre or end per axis
+    float shiftedFraction = tuning::negatives::kShiftedFraction;  // > 0: shifted by this of the side
   };
   static Params paramsOf(const TrackerConfig& c);
 

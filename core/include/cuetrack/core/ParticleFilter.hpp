@@ -14,6 +14,7 @@
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
 
@@ -26,11 +27,11 @@ struct Particle {
 // 2D: first-order AR on the window centre plus scale and aspect random walks.
 // Noise std per frame, as fractions of the window's mean side sqrt(w h).
 struct MotionModel2d {
-  float positionNoise = 0.09f;
-  float velocityNoise = 0.02f;
-  float velocityDecay = 0.9f;  // du' = decay du + noise: keeps velocities bounded
-  float scaleNoise = 0.025f;   // std of ln(scale) per frame
-  float aspectNoise = 0.01f;   // std of ln(w/h) per frame
+  float positionNoise = tuning::motion2d::kPositionNoise;
+  float velocityNoise = tuning::motion2d::kVelocityNoise;
+  float velocityDecay = tuning::motion2d::kVelocityDecay;
+  float scaleNoise = tuning::motion2d::kScaleNoise;
+  float aspectNoise = tuning::motion2d::kAspectNoise;
   // framesElapsed > 1 when frames were dropped: the velocity is per frame, so the
   // particle coasts that many frames (the noise stays one frame's: see FramePeriod).
   void predict(Particle& q, Rng& rng, float spread, int framesElapsed = 1) const;
@@ -60,8 +61,8 @@ class FramePeriod {
 // the paper's 550 mm^2/s^2 alone moves particles by under a millimetre per frame),
 // and, when size adaptation is on, random walks of ln D and ln H.
 struct MotionModel3d {
-  float velocityNoiseMm2PerS2 = 550.f;
-  float positionNoise = 0.12f;
+  float velocityNoiseMm2PerS2 = tuning::motion3d::kVelocityNoiseMm2PerS2;
+  float positionNoise = tuning::motion3d::kPositionNoise;
   float sizeNoise = 0.f;  // std of ln(D), ln(H) per frame; 0 = fixed cylinder (paper)
   void predict(Particle& q, Rng& rng, float dtS, float spread) const;
   // A sideways jump (x, y) of scale x the position noise over dtS, taken into the
@@ -72,6 +73,12 @@ struct MotionModel3d {
 // The cylinder's projection: an upright cylinder seen by a pinhole camera is a
 // rectangle fx D / z wide and fy H / z high around the projected centre.
 Box projectCylinder(const Particle& q, const CameraIntrinsics& k);
+
+// A particle's window in the image: its cylinder's projection in 3D, its box in 2D.
+inline Box particleWindow(const Particle& q, bool is3d, const CameraIntrinsics& k) {
+  if (is3d) return projectCylinder(q, k);
+  return Box{q.p[0] - 0.5f * q.size[0], q.p[1] - 0.5f * q.size[1], q.size[0], q.size[1]};
+}
 
 // A guard (every 3D preset): keep the cylinder's projected centre inside the image and
 // its centre depth in [kMinCylinderDepthMm, kMaxDepthMm], zeroing the velocity

@@ -10,18 +10,19 @@
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
 #include "cuetrack/core/TrainingSet.hpp"
+#include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
 
 class TemplateAnchor {
  public:
   struct Params {
-    int scaleSteps = 2;       // K: a (2K+1)^2 ladder of widths x heights, <= kMaxTemplateScaleSteps
-    float scaleStep = 0.04f;  // ladder step of ln w, ln h
-    float minNcc = 0.85f;     // best match needed to move anything
-    float gain = 0.3f;        // part of the ladder's size correction applied
-    float shiftStep = 0.02f;  // shifts of -2..2 steps of this part of the side (0: size only)
-    float shiftGain = 0.6f;   // part of the shift correction applied
+    int scaleSteps = tuning::templateAnchor::kScaleSteps;  // <= kMaxTemplateScaleSteps
+    float scaleStep = tuning::templateAnchor::kScaleStep;
+    float minNcc = tuning::templateAnchor::kMinNcc;
+    float gain = tuning::templateAnchor::kGain;
+    float shiftStep = tuning::templateAnchor::kShiftStep;  // 0: size only
+    float shiftGain = tuning::templateAnchor::kShiftGain;
   };
   static Params paramsOf(const TrackerConfig& c);
 

@@ -13,10 +13,14 @@
 
 #include "cuetrack/core/Clock.hpp"
 #include "cuetrack/core/CylinderSizer.hpp"
+#include "cuetrack/core/DepthGuard.hpp"
+#include "cuetrack/core/FastMotion.hpp"
 #include "cuetrack/core/FeaturePool.hpp"
 #include "cuetrack/core/Frame.hpp"
 #include "cuetrack/core/Gate.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
+#include "cuetrack/core/LostSearch.hpp"
+#include "cuetrack/core/ModeGuard.hpp"
 #include "cuetrack/core/NegativeSampler.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/Rng.hpp"
@@ -44,8 +48,9 @@ const char* toString(InitError e);
 
 // The members are components (particle filter, observation model, feature pool,
 // training set, negative sampler, update gate and lost detector, and the beyond-the-paper
-// cylinder sizer, template anchor and size filter), each a fixed-size class of its own
-// with its own tests; Tracker wires them and keeps the track's state. It is large
+// cylinder sizer, template anchor, size filter, lost search, mode guard, fast motion and
+// depth guard), each a fixed-size class of its own with its own tests; Tracker wires
+// them and keeps the track's state. It is large
 // (MiBs): give it static storage or allocate it once.
 class Tracker {
  public:
@@ -93,11 +98,9 @@ class Tracker {
   void addNegatives(const Box& around, int count, const PixelRect& roi);
   void addExample(const Box& win, bool positive);
   void learn(const Box& estimate, const PixelRect& roi);
+  void train();  // GentleBoost on the training set
   bool medianDepthMm(const Frame& frame, const Box& box, float* out);
-  Particle searchParticle(bool wide);
-  // refineSearch: hill-climbs the best scored fresh search windows (scores and particles
-  // updated in place); windows stay inside `roi`, where the tables are.
-  void refineSearchWindows(int n, const PixelRect& roi);
+  SearchView searchView() const { return SearchView{_is3d, _k, _imageW, _imageH}; }
 
   TrackerConfig _config{};
   uint64_t _seed = 0;
@@ -114,18 +117,13 @@ class Tracker {
   int _imageW = 0, _imageH = 0;
   CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
-  FramePeriod _period{};    // fastMotion: frames dropped since the last one
-  bool _jumpArmed = false;  // fastMotion: the last frame was learnt, so particles may jump
-  bool _jumping3d = false;  // ... and in 3D they do this frame (frames far enough apart)
-  Particle _preJump[kMaxParticles / 2];  // 3D: each jumping particle before its jump
+  FastMotion _fast{};        // fastMotion: jumping particles, coasting over dropped frames
   Box _lastBox{};
   SizeFilter2d _sizeFilter{};      // 2D: the estimate's size, smoothed
   TemplateAnchor _templateAnchor;  // 2D, scaleAnchor2d: the init box's grey template
   Particle _lastEstimate{};
-  int _lostFrames = 0;       // lost detection (beyond the paper): frames since declared lost
-  float _depthRefMm = 0.f;   // ... 3D: depth of the last confirmed estimate [mm]
-  float _learnRefMm = 0.f;   // ... 3D: the learning check's reference (learnMaxDepthChange)
-  float _prevDepthMm = 0.f;  // ... 3D: the last frame's estimate depth
+  int _lostFrames = 0;     // lost detection (beyond the paper): frames since declared lost
+  DepthGuard _depthGuard;  // ... 3D: the estimate's depth against the confirmed one
 
   IntegralChannels _channels;
   FeaturePool _pool;
@@ -138,7 +136,7 @@ class Tracker {
   uint8_t _valid[kMaxParticles];
   uint8_t _band[kMaxParticles];    // scoring order: row band of each window
   uint16_t _order[kMaxParticles];  // scoring order: particle indices by band
-  uint8_t _inMode[kMaxParticles];  // modeGuard: particles in the best particle's mode
+  ModeGuard _modeGuard;            // modeGuard: a split cloud's best mode
   float _featureErrors[kMaxPoolFeatures];
   NegativeSampler _negatives{};
   CylinderSizer _sizer{};  // adaptCylinderSize: D, H and the centre follow the depth silhouette

@@ -1,0 +1,137 @@
+// Every number of the tracker that no preset changes, written once, grouped by the
+// component that uses it, each with its unit and why. What a preset or a user does
+// change is in TrackerConfig.hpp; capacities (array sizes) are in Config.hpp.
+// docs/algorithm.md explains each choice; docs/experiments.md what else was tried.
+#pragma once
+
+namespace cuetrack::tuning {
+
+// Particle weights: w = exp(kWeightGain * (c - c_max)), c in [-1, 1] the classifier's
+// score. 12 keeps ~50 effective particles of 2000 on a sharp peak.
+inline constexpr float kWeightGain = 12.f;
+
+// The update gate (the paper's): learn when the confidence (c + 1) / 2 at the estimate
+// is at least this ...
+inline constexpr float kLearnConfidence = 0.55f;
+// ... and the particles' weighted mean overlap with the estimate at least this.
+inline constexpr float kLearnConcentration = 0.5f;
+
+namespace training {
+inline constexpr int kExamples = 140;        // the paper's training set size, <= kMaxTrainingExamples
+inline constexpr int kNegativesPerUpdate = 10;  // negatives added per learning step
+// The init box plus slightly shifted and rescaled copies (by N(0, jitter^2) of the side),
+// kept for good. 2D needs more, closer copies: the classifier alone places its window.
+inline constexpr int kInitialPositives3d = 9;
+inline constexpr float kInitialJitter3d = 0.03f;
+inline constexpr int kInitialPositives2d = 17;
+inline constexpr float kInitialJitter2d = 0.015f;
+inline constexpr float kAnchorWeight = 2.f;  // boosting weight of a kept initial positive
+inline constexpr int kBoostCandidates = 48;  // GentleBoost rounds after the first search these
+inline constexpr int kBoostRefreshRounds = 12;  // ... and every this many rounds all again
+}  // namespace training
+
+namespace negatives {
+inline constexpr float kNearOverlap = 0.5f;   // near-miss negatives overlap the estimate less
+inline constexpr float kShrunkScale = 0.65f;  // some near negatives: the estimate x this or 1/this
+inline constexpr float kShiftedFraction = 0.2f;  // some: the estimate shifted by this of its side
+}  // namespace negatives
+
+namespace motion2d {
+// Noise std per frame, as fractions of the window's mean side sqrt(w h).
+inline constexpr float kPositionNoise = 0.09f;
+inline constexpr float kVelocityNoise = 0.02f;
+inline constexpr float kVelocityDecay = 0.9f;  // du' = decay du + noise: velocities stay bounded
+inline constexpr float kScaleNoise = 0.015f;   // std of ln(scale) per frame
+inline constexpr float kAspectNoise = 0.004f;  // ln w += a, ln h -= a, a ~ N(0, this^2)
+}  // namespace motion2d
+
+namespace motion3d {
+// The paper's AR(1) velocity noise variance accrued per second [mm^2/s^2 per s].
+inline constexpr float kVelocityNoiseMm2PerS2 = 550.f;
+// Position diffusion, x D per sqrt(frame of 1/30 s): the paper's velocity noise alone
+// moves a particle by under a millimetre a frame.
+inline constexpr float kPositionNoise = 0.12f;
+}  // namespace motion3d
+
+// While lost, the motion noise is this many times larger, so the cloud spreads.
+inline constexpr float kLostSpread = 3.f;
+// The ROI of the integral tables: the particles' boxes plus this x their mean size per side.
+inline constexpr float kRoiMarginSides = 1.6f;
+
+namespace fastMotion {
+inline constexpr int kJumpEvery = 10;   // one particle in this many jumps ...
+inline constexpr float kJumpScale = 3.f;  // ... by this many times the position noise
+// 3D: only with frames further apart than this [s] (at 30 fps the AR(1) model keeps up) ...
+inline constexpr float kJumpMinDtS = 0.045f;
+// ... and a jump whose depth moved by more than this part of z is undone (it landed on
+// another surface: a twin further back, the background).
+inline constexpr float kJumpMaxDepthChange = 0.15f;
+}  // namespace fastMotion
+
+namespace cylinder {  // adaptCylinderSize
+inline constexpr float kSizeNoise = 0.002f;  // std of ln D and ln H per frame
+inline constexpr float kSizeGain = 0.1f;     // per learnt frame, ln D, ln H move this part
+                                             // of the way to the silhouette in depth
+inline constexpr float kCentreGain = 0.2f;   // ... and the window's centre this part
+}  // namespace cylinder
+
+namespace size2d {  // the alpha-beta filter on the 2D estimate's ln w, ln h
+inline constexpr float kGain = 0.3f;       // alpha
+inline constexpr float kRateGain = 0.05f;  // beta: steady zooms followed without lag
+}  // namespace size2d
+
+namespace templateAnchor {  // scaleAnchor2d
+inline constexpr int kScaleSteps = 2;       // K: a (2K+1)^2 ladder of widths x heights
+inline constexpr float kScaleStep = 0.04f;  // ladder step of ln w, ln h
+inline constexpr float kMinNcc = 0.85f;     // best match needed to move anything
+inline constexpr float kGain = 0.3f;        // part of the ladder's size correction applied
+inline constexpr float kShiftStep = 0.02f;  // templateShift: -2..2 shifts of this part of the side
+inline constexpr float kShiftGain = 0.6f;   // part of the shift correction applied
+inline constexpr float kCloudGain = 0.5f;   // anchorMovesCloud: part applied to every particle
+}  // namespace templateAnchor
+
+namespace modeGuard {
+// The weighted mean scores this far below the best particle, which is itself at least
+// this confident ((c + 1) / 2): the cloud has split.
+inline constexpr float kMargin = 0.2f;
+inline constexpr float kMinConfidence = 0.7f;
+inline constexpr float kModeOverlap = 0.5f;  // the mode: particles overlapping the best this much
+}  // namespace modeGuard
+
+namespace lost {  // LostDetector
+inline constexpr float kLostBelow = 0.42f;   // confidence under which a frame is a miss
+inline constexpr int kLostAfter = 4;         // misses in a row that make the target lost
+inline constexpr float kFoundAbove = 0.58f;  // confidence of a hit while lost
+inline constexpr int kFoundAfter = 2;        // hits in a row that find it again
+inline constexpr int kProbationFrames = 8;   // then one frame under kFoundAbove loses it again
+// Found needs the typical tracked confidence less this (a look-alike scores lower).
+inline constexpr float kFoundMargin = 0.15f;
+inline constexpr float kTypicalRate = 0.1f;  // weight of the latest frame in that running mean
+}  // namespace lost
+
+namespace search {  // re-acquisition while lost
+// Every kSearchEvery-th particle is drawn anew each frame: half anywhere in the image,
+// half around the last learnt estimate within a radius of (0.5 + kGrowth x frames lost)
+// window sides.
+inline constexpr int kEvery = 2;
+inline constexpr float kGrowth = 0.25f;
+inline constexpr float kScaleNoise2d = 0.15f;  // 2D: std of ln(scale) of a fresh window
+inline constexpr float kInside = 0.8f;  // a window must lie this much inside the image
+// refineSearch: the best this many fresh windows climb to their peak, in steps of
+// kRefineStep of their side, halved when no neighbour scores higher, kRefineSteps times.
+inline constexpr int kRefineWindows = 8;
+inline constexpr float kRefineStep = 0.12f;
+inline constexpr int kRefineSteps = 6;
+}  // namespace search
+
+namespace depthGuard {  // 3D, lostDetection
+// The estimate's depth over the last confirmed one (or its inverse) below this: the cloud
+// has jumped onto something in front or behind; a miss, and not learnt.
+inline constexpr float kJumpRatio = 0.75f;
+// learnDepthCheck: no learning from an estimate more than this part off the learning
+// reference, which follows the estimate while it moves by at most kFollow a frame at 30 fps.
+inline constexpr float kLearnMaxChange = 0.12f;
+inline constexpr float kFollow = 0.03f;
+}  // namespace depthGuard
+
+}  // namespace cuetrack::tuning

@@ -1,0 +1,59 @@
+#include "cuetrack/core/LostSearch.hpp"
+
+#include "cuetrack/core/FastMath.hpp"
+
+namespace cuetrack {
+
+Particle LostSearch::draw(int i, const Particle& last, int framesLost, const SearchView& view,
+                          Rng& rng) {
+  const bool wide = (i / kEvery) % 2 == 0;
+  Particle q = last;
+  q.v[0] = q.v[1] = q.v[2] = 0.f;
+  const float iw = static_cast<float>(view.imageW), ih = static_cast<float>(view.imageH);
+  float u, v;
+  if (wide) {
+    u = rng.uniform(0.f, iw);
+    v = rng.uniform(0.f, ih);
+  } else {
+    const Box a = view.window(last);
+    const float r = fmath::sqrtf(a.w * a.h) *
+                    (0.5f + tuning::search::kGrowth * static_cast<float>(framesLost));
+    u = fmath::clampf(a.x + 0.5f * a.w + r * rng.gaussianFast(), 0.f, iw);
+    v = fmath::clampf(a.y + 0.5f * a.h + r * rng.gaussianFast(), 0.f, ih);
+  }
+  if (view.is3d) {
+    const float z = q.p[2];
+    q.p[0] = (u - view.k.cx) * z / view.k.fx;
+    q.p[1] = (v - view.k.cy) * z / view.k.fy;
+  } else {
+    const float sc = fmath::fastExp(tuning::search::kScaleNoise2d * rng.gaussianFast());
+    q.p[0] = u;
+    q.p[1] = v;
+    q.size[0] *= sc;
+    q.size[1] *= sc;
+  }
+  return q;
+}
+
+int LostSearch::best(int n, const float* scores, const uint8_t* valid, int* top) {
+  constexpr int k = tuning::search::kRefineWindows;
+  int nt = 0;
+  for (int i = 0; i < n; i += kEvery) {
+    if (valid[i] == 0) continue;
+    int j;
+    if (nt < k)
+      j = nt++;
+    else if (scores[i] > scores[top[k - 1]])
+      j = k - 1;
+    else
+      continue;
+    while (j > 0 && scores[top[j - 1]] < scores[i]) {
+      top[j] = top[j - 1];
+      --j;
+    }
+    top[j] = i;
+  }
+  return nt;
+}
+
+}  // namespace cuetrack
