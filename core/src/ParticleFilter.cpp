@@ -79,6 +79,20 @@ Box projectCylinder(const Particle& q, const CameraIntrinsics& k) {
   return Box{u - 0.5f * w, v - 0.5f * h, w, h};
 }
 
+Particle cylinderFromBox(const Box& b, float surfaceMm, const CameraIntrinsics& k) {
+  Particle q;
+  const float D = b.w * surfaceMm / (k.fx - 0.5f * b.w);
+  const float zc = surfaceMm + 0.5f * D;
+  const float H = b.h * zc / k.fy;
+  const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
+  q.p[0] = (u - k.cx) * zc / k.fx;
+  q.p[1] = (v - k.cy) * zc / k.fy;
+  q.p[2] = zc;
+  q.size[0] = D;
+  q.size[1] = H;
+  return q;
+}
+
 bool keepInView(Particle& q, const CameraIntrinsics& k, int imageW, int imageH) {
   bool moved = false;
   if (!(q.p[2] >= kMinCylinderDepthMm) || q.p[2] > static_cast<float>(kMaxDepthMm)) {

@@ -123,4 +123,23 @@ Box TemplateAnchor::correct(const FrameTables& t, const Box& est) {
   return Box{ncx - 0.5f * w, ncy - 0.5f * h, w, h};
 }
 
+void TemplateAnchor::moveCloud(const Box& from, const Box& to, ParticleFilter& filter,
+                               Box* boxes) {
+  constexpr float g = tuning::templateAnchor::kCloudGain;
+  if (!(g > 0.f) || from.empty() || to.empty()) return;
+  const float sw = fmath::fastExp(g * fmath::fastLog(to.w / from.w));
+  const float sh = fmath::fastExp(g * fmath::fastLog(to.h / from.h));
+  const float du = g * ((to.x + 0.5f * to.w) - (from.x + 0.5f * from.w));
+  const float dv = g * ((to.y + 0.5f * to.h) - (from.y + 0.5f * from.h));
+  const int n = filter.size();
+  for (int i = 0; i < n; ++i) {
+    Particle& q = filter[i];
+    q.p[0] += du;
+    q.p[1] += dv;
+    q.size[0] *= sw;
+    q.size[1] *= sh;
+    boxes[i] = particleWindow(q, false, CameraIntrinsics{});
+  }
+}
+
 }  // namespace cuetrack

@@ -11,46 +11,7 @@ float frameDtS(uint64_t last, uint64_t now) {
   const float dt = static_cast<float>(now - last) * 1e-6f;
   return dt > 1.f ? 1.f : dt;
 }
-
-PixelRect unite(const PixelRect& a, const PixelRect& b) {
-  if (a.width() <= 0 || a.height() <= 0) return b;
-  if (b.width() <= 0 || b.height() <= 0) return a;
-  PixelRect r;
-  r.x0 = a.x0 < b.x0 ? a.x0 : b.x0;
-  r.y0 = a.y0 < b.y0 ? a.y0 : b.y0;
-  r.x1 = a.x1 > b.x1 ? a.x1 : b.x1;
-  r.y1 = a.y1 > b.y1 ? a.y1 : b.y1;
-  return r;
-}
-
-Box grow(const Box& b, float by) {
-  return Box{b.x - by * b.w, b.y - by * b.h, b.w * (1.f + 2.f * by), b.h * (1.f + 2.f * by)};
-}
 }  // namespace
-
-const char* toString(InitError e) {
-  switch (e) {
-    case InitError::None:
-      return "ok";
-    case InitError::EmptyBox:
-      return "empty box (w or h <= 0)";
-    case InitError::BoxOutsideImage:
-      return "box does not intersect the image";
-    case InitError::BoxTooSmall:
-      return "box smaller than 8x8 px";
-    case InitError::NoColour:
-      return "frame has no colour image";
-    case InitError::ImageTooLarge:
-      return "image larger than 640x480";
-    case InitError::NoDepth:
-      return "no depth (or no valid depth inside the box) for a depth configuration";
-    case InitError::NoIntrinsics:
-      return "3D state space needs camera intrinsics";
-    case InitError::BoxTooWideFor3d:
-      return "box too wide for the 3D cylinder (w >= fx px)";
-  }
-  return "unknown error";
-}
 
 Tracker::Tracker() = default;
 
@@ -90,46 +51,11 @@ void Tracker::reset() {
 }
 
 Box Tracker::clampToImage(const Box& b) const {
-  Box r = b;
-  const float iw = static_cast<float>(_imageW), ih = static_cast<float>(_imageH);
-  if (r.w > iw) r.w = iw;
-  if (r.h > ih) r.h = ih;
-  if (r.w < kMinWindowPx) r.w = kMinWindowPx;
-  if (r.h < kMinWindowPx) r.h = kMinWindowPx;
-  // Keep at least half the window inside the image.
-  r.x = fmath::clampf(r.x, -0.5f * r.w, iw - 0.5f * r.w);
-  r.y = fmath::clampf(r.y, -0.5f * r.h, ih - 0.5f * r.h);
-  return r;
+  return saneWindow(b, _imageW, _imageH);
 }
 
 Box Tracker::particleBox(const Particle& q) const {
   return particleWindow(q, _is3d, _k);
-}
-
-bool Tracker::medianDepthMm(const Frame& frame, const Box& box, float* out) {
-  const PixelRect r = clipBox(box, frame.depthMm.width, frame.depthMm.height);
-  constexpr int kBins = kMaxDepthMm / 10 + 1;
-  for (int i = 0; i < kBins; ++i) _depthHistogram[i] = 0;
-  uint32_t n = 0;
-  for (int y = r.y0; y < r.y1; ++y) {
-    const uint16_t* row = frame.depthMm.row(y);
-    for (int x = r.x0; x < r.x1; ++x) {
-      const uint16_t d = row[x];
-      if (d == 0 || d > kMaxDepthMm) continue;
-      ++_depthHistogram[d / 10];
-      ++n;
-    }
-  }
-  if (n == 0) return false;
-  uint32_t acc = 0;
-  for (int i = 0; i < kBins; ++i) {
-    acc += _depthHistogram[i];
-    if (2 * acc >= n) {
-      *out = static_cast<float>(i) * 10.f + 5.f;
-      return true;
-    }
-  }
-  return false;
 }
 
 void Tracker::addExample(const Box& win, bool positive) {
@@ -186,7 +112,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
       if (!_config.fallbackTo2d) return InitError::BoxTooWideFor3d;
       ok = false;
     }
-    if (ok && _is3d && !medianDepthMm(frame, b, &surfaceMm)) ok = false;
+    if (ok && _is3d && !_depthMedian.of(frame.depthMm, b, &surfaceMm)) ok = false;
     if (!ok) {
       if (!_config.fallbackTo2d) return InitError::NoDepth;
       _is3d = false;
@@ -208,16 +134,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
 
   Particle q;
   if (_is3d) {
-    // Silhouette width = fx D / z_centre with z_centre = surface + D/2.
-    const float D = b.w * surfaceMm / (_k.fx - 0.5f * b.w);
-    const float zc = surfaceMm + 0.5f * D;
-    const float H = b.h * zc / _k.fy;
-    const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
-    q.p[0] = (u - _k.cx) * zc / _k.fx;
-    q.p[1] = (v - _k.cy) * zc / _k.fy;
-    q.p[2] = zc;
-    q.size[0] = D;
-    q.size[1] = H;
+    q = cylinderFromBox(b, surfaceMm, _k);
   } else {
     q.p[0] = b.x + 0.5f * b.w;
     q.p[1] = b.y + 0.5f * b.h;
@@ -328,43 +245,12 @@ void Tracker::score(const PixelRect& roi, bool wasLost) {
                 b.x < static_cast<float>(_imageW) && b.y < static_cast<float>(_imageH);
     if (wasLost && _valid[i] != 0) _valid[i] = LostSearch::insideEnough(b, _imageW, _imageH);
   }
-  // Visit particles row band by row band (counting sort on the window's top edge, 8 px
-  // bands): the feature reads of consecutive particles then share cache lines.
-  {
-    constexpr int kBands = 64;
-    uint16_t start[kBands + 1] = {};
-    for (int i = 0; i < n; ++i) {
-      int band = (fmath::floorToInt(_boxes[i].y) - roi.y0) >> 3;
-      band = band < 0 ? 0 : (band >= kBands ? kBands - 1 : band);
-      _band[i] = static_cast<uint8_t>(band);
-      ++start[band + 1];
-    }
-    for (int b = 0; b < kBands; ++b) start[b + 1] = static_cast<uint16_t>(start[b + 1] + start[b]);
-    for (int i = 0; i < n; ++i) _order[start[_band[i]]++] = static_cast<uint16_t>(i);
-  }
-  _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores, _order);
+  _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores,
+                       _scanOrder.sort(_boxes, n, roi.y0));
   if (wasLost && _config.refineSearch) {
     const FrameTables& t = _channels.tables();
     LostSearch::refine(n, roi, searchView(), _filter, _boxes, _scores, _valid,
                        [&](const Box& b) { return _strong.evaluate(t, b); });
-  }
-}
-
-void Tracker::followAnchor(const Box& from, const Box& to) {
-  constexpr float g = tuning::templateAnchor::kCloudGain;
-  if (!(g > 0.f) || from.empty() || to.empty()) return;
-  const float sw = fmath::fastExp(g * fmath::fastLog(to.w / from.w));
-  const float sh = fmath::fastExp(g * fmath::fastLog(to.h / from.h));
-  const float du = g * ((to.x + 0.5f * to.w) - (from.x + 0.5f * from.w));
-  const float dv = g * ((to.y + 0.5f * to.h) - (from.y + 0.5f * from.h));
-  const int n = _filter.size();
-  for (int i = 0; i < n; ++i) {
-    Particle& q = _filter[i];
-    q.p[0] += du;
-    q.p[1] += dv;
-    q.size[0] *= sw;
-    q.size[1] *= sh;
-    _boxes[i] = particleBox(q);
   }
 }
 
@@ -396,7 +282,7 @@ Tracker::Estimate Tracker::estimate(bool wasLost) {
     // it. Only when the classifier is sure enough to learn: after a sudden exposure
     // change the match is all there is, and it should not carry the cloud.
     if (_config.anchorMovesCloud && 0.5f * (c + 1.f) >= tuning::kLearnConfidence)
-      followAnchor(mean, e.box);
+      TemplateAnchor::moveCloud(mean, e.box, _filter, _boxes);
   }
   if (!_is3d && _sizeFilter.enabled() && !e.box.empty()) e.box = _sizeFilter.filter(e.box);
   float concentration = 0.f, wsum = 0.f;
@@ -446,6 +332,23 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   return learned;
 }
 
+void Tracker::correctDepths(float dtS) {
+  // Pull each particle onto the measured surface (paper eq. 2).
+  const int n = _filter.size();
+  for (int i = 0; i < n; ++i) {
+    if (correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH))
+      _boxes[i] = particleBox(_filter[i]);
+  }
+  // A jump that landed on another surface (a twin further back, the background) is
+  // undone: only the sideways search is wanted, not a new depth.
+  for (int i = 1; _fast.jumping() && i < n; i += FastMotion::kEvery) {
+    if (!_fast.undoOffSurface(i, _filter[i])) continue;
+    keepInView(_filter[i], _k, _imageW, _imageH);
+    correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH);
+    _boxes[i] = particleBox(_filter[i]);
+  }
+}
+
 TrackResult Tracker::update(const Frame& frame) {
   TrackResult r;
   r.state = _state;
@@ -461,33 +364,19 @@ TrackResult Tracker::update(const Frame& frame) {
 
   // Predict, and tabulate the region the particles (and negatives around them) can touch.
   const PixelRect roi = predict(dtS, framesElapsed, wasLost);
-  _channels.compute(frame, roi, _depthFeatures || _is3d);
   const uint64_t t1 = now();
-
-  // 3D: pull each particle onto the measured surface (paper eq. 2).
-  const int n = _filter.size();
-  if (_is3d && frame.hasDepth()) {
-    for (int i = 0; i < n; ++i) {
-      if (correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH))
-        _boxes[i] = particleBox(_filter[i]);
-    }
-    // A jump that landed on another surface (a twin further back, the background) is
-    // undone: only the sideways search is wanted, not a new depth.
-    for (int i = 1; _fast.jumping() && i < n; i += FastMotion::kEvery) {
-      if (!_fast.undoOffSurface(i, _filter[i])) continue;
-      keepInView(_filter[i], _k, _imageW, _imageH);
-      correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH);
-      _boxes[i] = particleBox(_filter[i]);
-    }
-  }
+  _channels.compute(frame, roi, _depthFeatures || _is3d);
   const uint64_t t2 = now();
-
+  if (_is3d && frame.hasDepth()) correctDepths(dtS);
+  const uint64_t t3 = now();
   score(roi, wasLost);
   Estimate e = estimate(wasLost);
-  const uint64_t t3 = now();
+  const uint64_t t4 = now();
   const bool learned = decide(frame, e, wasLost, roi, dtS);
   _fast.endFrame(learned);
-  const uint64_t t4 = now();
+  const uint64_t t5 = now();
+
+  const int n = _filter.size();
 
   _filter.resample(_rng);
   if (_state == TrackState::Lost || wasLost) {
@@ -506,12 +395,11 @@ TrackResult Tracker::update(const Frame& frame) {
     for (int a = 0; a < 3; ++a) r.positionMm[a] = e.particle.p[a];
   }
   if (_clock != nullptr) {
-    const uint64_t t5 = now();
-    r.timesUs.features = static_cast<uint32_t>(t1 - t0);
-    r.timesUs.predict = static_cast<uint32_t>(t2 - t1);
-    r.timesUs.weigh = static_cast<uint32_t>(t3 - t2);
-    r.timesUs.learn = static_cast<uint32_t>(t4 - t3);
-    r.timesUs.total = static_cast<uint32_t>(t5 - t0);
+    r.timesUs.predict = static_cast<uint32_t>((t1 - t0) + (t3 - t2));
+    r.timesUs.features = static_cast<uint32_t>(t2 - t1);
+    r.timesUs.weigh = static_cast<uint32_t>(t4 - t3);
+    r.timesUs.learn = static_cast<uint32_t>(t5 - t4);
+    r.timesUs.total = static_cast<uint32_t>(now() - t0);
   }
   return r;
 }

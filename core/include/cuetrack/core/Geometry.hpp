@@ -10,6 +10,11 @@ struct Box {
   float area() const { return empty() ? 0.f : w * h; }
 };
 
+// b grown by `by` of its width and height on each side, about its centre.
+inline Box grow(const Box& b, float by) {
+  return Box{b.x - by * b.w, b.y - by * b.h, b.w * (1.f + 2.f * by), b.h * (1.f + 2.f * by)};
+}
+
 // Intersection over union; 0 when either box is empty (the paper's overlap).
 inline float overlap(const Box& a, const Box& b) {
   if (a.empty() || b.empty()) return 0.f;

@@ -20,6 +20,14 @@ struct PixelRect {
 // The pixel rectangle covering box b, clipped to w x h (may be empty).
 PixelRect clipBox(const Box& b, int w, int h);
 
+// The smallest rectangle holding a and b (either may be empty).
+inline PixelRect unite(const PixelRect& a, const PixelRect& b) {
+  if (a.width() <= 0 || a.height() <= 0) return b;
+  if (b.width() <= 0 || b.height() <= 0) return a;
+  return PixelRect{a.x0 < b.x0 ? a.x0 : b.x0, a.y0 < b.y0 ? a.y0 : b.y0,
+                   a.x1 > b.x1 ? a.x1 : b.x1, a.y1 > b.y1 ? a.y1 : b.y1};
+}
+
 class IntegralChannels {
  public:
   // Depth tables are all zero (no valid pixel) when the frame has no depth or useDepth is off.

@@ -74,6 +74,24 @@ struct MotionModel3d {
 // rectangle fx D / z wide and fy H / z high around the projected centre.
 Box projectCylinder(const Particle& q, const CameraIntrinsics& k);
 
+// A new track's cylinder from its box and the depth of the surface seen in it: the
+// silhouette is fx D / z_centre wide with z_centre = surface + D/2.
+Particle cylinderFromBox(const Box& b, float surfaceMm, const CameraIntrinsics& k);
+
+// A window kept sane: no larger than the image, at least kMinWindowPx a side, and at
+// least half inside the image.
+inline Box saneWindow(const Box& b, int imageW, int imageH) {
+  Box r = b;
+  const float iw = static_cast<float>(imageW), ih = static_cast<float>(imageH);
+  if (r.w > iw) r.w = iw;
+  if (r.h > ih) r.h = ih;
+  if (r.w < kMinWindowPx) r.w = kMinWindowPx;
+  if (r.h < kMinWindowPx) r.h = kMinWindowPx;
+  r.x = fmath::clampf(r.x, -0.5f * r.w, iw - 0.5f * r.w);
+  r.y = fmath::clampf(r.y, -0.5f * r.h, ih - 0.5f * r.h);
+  return r;
+}
+
 // A particle's window in the image: its cylinder's projection in 3D, its box in 2D.
 inline Box particleWindow(const Particle& q, bool is3d, const CameraIntrinsics& k) {
   if (is3d) return projectCylinder(q, k);

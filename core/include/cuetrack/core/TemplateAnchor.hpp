@@ -8,6 +8,7 @@
 
 #include "cuetrack/core/Features.hpp"
 #include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
 #include "cuetrack/core/TrainingSet.hpp"
 #include "cuetrack/core/Tuning.hpp"
@@ -35,6 +36,11 @@ class TemplateAnchor {
   // The estimate with its size, then its centre, moved towards the template's best match;
   // `est` unchanged when the best match is poor (the target turned, changed or is hidden).
   Box correct(const FrameTables& t, const Box& est);
+  // anchorMovesCloud: every (2D) particle shifted and rescaled by kCloudGain of the
+  // correction from `from` to `to`, and its window in boxes[i] updated, so that the
+  // correction stays in the state instead of being made afresh each frame to a mean the
+  // classifier keeps pulling away.
+  static void moveCloud(const Box& from, const Box& to, ParticleFilter& filter, Box* boxes);
   // NCC of `win`'s grey cells with the template, in [-1, 1]; -2 when `win` is flat.
   float match(const FrameTables& t, const Box& win);
 

@@ -15,11 +15,11 @@ enum class TrackState : uint8_t {
 
 // Per-stage wall time of one update [us]; all zero when the tracker has no Clock.
 struct StageTimesUs {
-  uint32_t features = 0;  // colour conversion + integral images
-  uint32_t predict = 0;   // motion model + depth correction
-  uint32_t weigh = 0;     // classifier on every particle
-  uint32_t learn = 0;     // training-set update, pool update, re-training
-  uint32_t total = 0;
+  uint32_t predict = 0;   // motion model (and the lost search's draws) + 3D depth correction
+  uint32_t features = 0;  // colour conversion + integral images of the particles' region
+  uint32_t weigh = 0;     // classifier on every particle (and the lost search's climb), estimate
+  uint32_t learn = 0;     // lost detection, update gate, training-set and pool update, re-training
+  uint32_t total = 0;     // all of update(), resampling included
 };
 
 struct TrackResult {

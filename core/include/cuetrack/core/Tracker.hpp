@@ -14,6 +14,7 @@
 #include "cuetrack/core/Clock.hpp"
 #include "cuetrack/core/CylinderSizer.hpp"
 #include "cuetrack/core/DepthGuard.hpp"
+#include "cuetrack/core/DepthMedian.hpp"
 #include "cuetrack/core/FastMotion.hpp"
 #include "cuetrack/core/FeaturePool.hpp"
 #include "cuetrack/core/Frame.hpp"
@@ -24,6 +25,7 @@
 #include "cuetrack/core/NegativeSampler.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/ScanOrder.hpp"
 #include "cuetrack/core/SizeFilter.hpp"
 #include "cuetrack/core/StrongClassifier.hpp"
 #include "cuetrack/core/TemplateAnchor.hpp"
@@ -84,11 +86,9 @@ class Tracker {
   // update()'s stages, in order.
   PixelRect predict(float dtS, int framesElapsed,
                     bool wasLost);                 // motion (+ search while lost); the ROI
+  void correctDepths(float dtS);                   // 3D: every particle onto the surface
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
   Estimate estimate(bool wasLost);                 // weights and the estimate
-  // anchorMovesCloud: every particle shifted and rescaled by templateCloudGain of the
-  // template anchor's correction from `from` to `to`.
-  void followAnchor(const Box& from, const Box& to);
   // Lost detection, the update gate and learning; true when learnt.
   bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi, float dtS);
 
@@ -99,7 +99,6 @@ class Tracker {
   void addExample(const Box& win, bool positive);
   void learn(const Box& estimate, const PixelRect& roi);
   void train();  // GentleBoost on the training set
-  bool medianDepthMm(const Frame& frame, const Box& box, float* out);
   SearchView searchView() const { return SearchView{_is3d, _k, _imageW, _imageH}; }
 
   TrackerConfig _config{};
@@ -134,13 +133,12 @@ class Tracker {
   Box _boxes[kMaxParticles];
   float _scores[kMaxParticles];
   uint8_t _valid[kMaxParticles];
-  uint8_t _band[kMaxParticles];    // scoring order: row band of each window
-  uint16_t _order[kMaxParticles];  // scoring order: particle indices by band
+  ScanOrder _scanOrder;
   ModeGuard _modeGuard;            // modeGuard: a split cloud's best mode
   float _featureErrors[kMaxPoolFeatures];
   NegativeSampler _negatives{};
   CylinderSizer _sizer{};  // adaptCylinderSize: D, H and the centre follow the depth silhouette
-  uint32_t _depthHistogram[kMaxDepthMm / 10 + 1];  // 10 mm bins, for the init median
+  DepthMedian _depthMedian;  // where a new 3D track stands
 };
 // Everything together (Config.hpp's list of big buffers plus the small ones): 10,531,768 B
 // on x86-64 at 640x480, within the 16 MiB.

@@ -1,0 +1,26 @@
+// The order in which the particles' windows are scored: row band by row band (a
+// counting sort on each window's top edge, in 8 px bands from the ROI's top), so that
+// the feature reads of consecutive windows share cache lines. The same scores in any
+// order; only the speed changes.
+#pragma once
+
+#include <cstdint>
+
+#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/Geometry.hpp"
+
+namespace cuetrack {
+
+class ScanOrder {
+ public:
+  static constexpr int kBandShift = 3;  // 8 px bands
+  static constexpr int kBands = 64;     // the last band takes every lower window
+  // The indices 0..n-1 of `boxes`, by band of box.y - roiY0 (stable within a band).
+  const uint16_t* sort(const Box* boxes, int n, int roiY0);
+
+ private:
+  uint8_t _band[kMaxParticles];
+  uint16_t _order[kMaxParticles];
+};
+
+}  // namespace cuetrack
