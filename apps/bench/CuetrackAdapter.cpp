@@ -19,7 +19,9 @@ Tracker& sharedTracker() {
 // best-noanchor (no 2D scale anchor), best-noanchorcloud (the anchor corrects the reported
 // box only, not the particles), best-nomodeguard (the weighted mean even when the
 // cloud has split), best-norefine (search windows not hill-climbed while lost),
-// best-nofastmotion (no jumping particles, no coasting over dropped frames).
+// best-nofastmotion (no jumping particles, no coasting over dropped frames), best-noshift
+// (the 2D anchor corrects the size only), best-nolearndepth (3D: no depth check before
+// learning), 1.1-centrednegatives (2D near negatives centred on the estimate).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
     const char* suffix;
@@ -31,7 +33,10 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
                               {"-noanchorcloud", &TrackerConfig::anchorMovesCloud},
                               {"-nomodeguard", &TrackerConfig::modeGuard},
                               {"-norefine", &TrackerConfig::refineSearch},
-                              {"-nofastmotion", &TrackerConfig::fastMotion}};
+                              {"-nofastmotion", &TrackerConfig::fastMotion},
+                              {"-noshift", &TrackerConfig::templateShift},
+                              {"-nolearndepth", &TrackerConfig::learnDepthCheck},
+                              {"-centrednegatives", &TrackerConfig::anchoredNegatives2d}};
   for (const Off& o : kOffs) {
     const std::string suffix(o.suffix);
     if (name.size() <= suffix.size() ||

@@ -54,7 +54,9 @@ const char* usage() {
          "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best, or a\n"
          "                     preset with a beyond-the-paper switch off: best-nolost,\n"
          "                     best-fixedsize, best-noanchor, best-noanchorcloud,\n"
-         "                     best-nomodeguard, best-norefine, best-nofastmotion\n"
+         "                     best-nomodeguard, best-norefine, best-nofastmotion,\n"
+         "                     best-noshift, best-nolearndepth; or a paper preset\n"
+         "                     with 2D negatives centred: 1.1-centrednegatives\n"
          "                     (repeatable; default best)\n"
          "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
          "  --peer-runs N      runs for the OpenCV peers (default: --runs)\n"
@@ -138,7 +140,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
           *err = "--config: unknown configuration '" + c +
                  "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
                  "best-noanchor, best-noanchorcloud, best-nomodeguard, best-norefine, "
-                 "best-nofastmotion)";
+                 "best-nofastmotion, best-noshift, best-nolearndepth, 1.1-centrednegatives)";
           return false;
         }
         configs.push_back(c);

@@ -1,0 +1,307 @@
+// The beyond-the-paper components the tracker wires, each on its own: the depth guard,
+// the mode guard, fast motion's jumps, the lost search and its climb, and the small
+// helpers (the depth median that places a new 3D track, the scan order).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "cuetrack/core/DepthGuard.hpp"
+#include "cuetrack/core/DepthMedian.hpp"
+#include "cuetrack/core/FastMotion.hpp"
+#include "cuetrack/core/LostSearch.hpp"
+#include "cuetrack/core/ModeGuard.hpp"
+#include "cuetrack/core/ScanOrder.hpp"
+
+using namespace cuetrack;
+
+namespace {
+constexpr float kFrameS = 1.f / 30.f;
+
+Particle at2d(float u, float v, float w, float h) {
+  Particle q;
+  q.p[0] = u;
+  q.p[1] = v;
+  q.size[0] = w;
+  q.size[1] = h;
+  return q;
+}
+}  // namespace
+
+TEST_CASE("DepthGuard: a jump off the confirmed depth either way is flagged", "[core][depthguard]") {
+  DepthGuard g;
+  g.reset(2000.f);
+  CHECK_FALSE(g.jumped(2000.f));
+  CHECK_FALSE(g.jumped(1600.f));
+  CHECK(g.jumped(1400.f));  // under 0.75 x 2000: something passing in front
+  CHECK_FALSE(g.jumped(2600.f));
+  CHECK(g.jumped(2700.f));  // 0.75 x 2700 > 2000: the background behind
+  // Found again further back: the confirmed depth moves there.
+  g.update(2700.f, true, true, kFrameS);
+  CHECK_FALSE(g.jumped(2700.f));
+  CHECK(g.confirmedMm() == 2700.f);
+}
+
+TEST_CASE("DepthGuard: learning follows smooth motion in depth, not a slide", "[core][depthguard]") {
+  DepthGuard g;
+  g.reset(2000.f);
+  CHECK(g.learnable(2200.f));  // within 12%
+  CHECK_FALSE(g.learnable(2300.f));
+  // Walking away by 2% a frame while nothing is learnt: the reference follows.
+  float z = 2000.f;
+  for (int i = 0; i < 10; ++i) {
+    z *= 1.02f;
+    g.update(z, false, true, kFrameS);
+  }
+  CHECK(g.learnReferenceMm() == z);
+  CHECK(g.learnable(z));
+  // A slide of 20% in one frame (onto the wall behind): the reference stays.
+  g.update(z * 1.2f, false, true, kFrameS);
+  CHECK(g.learnReferenceMm() == z);
+  CHECK_FALSE(g.learnable(z * 1.2f));
+  // While lost the reference does not follow.
+  DepthGuard lost;
+  lost.reset(2000.f);
+  lost.update(2010.f, false, false, kFrameS);
+  CHECK(lost.learnReferenceMm() == 2000.f);
+}
+
+TEST_CASE("DepthGuard: the follow allowance scales with the frame gap; off, all is learnable",
+          "[core][depthguard]") {
+  DepthGuard g;
+  g.reset(2000.f);
+  g.update(2150.f, false, true, 3.f * kFrameS);  // 7.5% over three frames: within 3 x 3%
+  CHECK(g.learnReferenceMm() == 2150.f);
+  DepthGuard h;
+  h.reset(2000.f);
+  h.update(2150.f, false, true, kFrameS);  // the same in one frame: no
+  CHECK(h.learnReferenceMm() == 2000.f);
+  DepthGuard off;
+  off.configure(false);
+  off.reset(2000.f);
+  CHECK(off.learnable(5000.f));
+}
+
+TEST_CASE("ModeGuard: a confident best far above the mean is a split cloud", "[core][modeguard]") {
+  CHECK(ModeGuard::split(0.2f, 0.6f));         // best 0.8 confident, mean 0.4 below
+  CHECK_FALSE(ModeGuard::split(0.45f, 0.6f));  // the mean close to the best
+  CHECK_FALSE(ModeGuard::split(-0.5f, 0.3f));  // best only 0.65 confident: maybe hidden
+}
+
+TEST_CASE("ModeGuard: the mode's mean ignores the other place", "[core][modeguard]") {
+  static ParticleFilter f;
+  static Box boxes[kMaxParticles];
+  const int n = 100;
+  f.setSize(n);
+  for (int i = 0; i < n; ++i) {
+    // 60 particles around u = 100 and 40 around u = 300, the best (heaviest) at 100.
+    const float u = i < 60 ? 100.f + static_cast<float>(i % 5) : 300.f + static_cast<float>(i % 5);
+    f[i] = at2d(u, 100.f, 40.f, 40.f);
+    f.weights()[i] = i == 0 ? 2.f : 1.f;
+    boxes[i] = particleWindow(f[i], false, CameraIntrinsics{});
+  }
+  const Particle all = f.weightedMean();
+  CHECK(all.p[0] > 150.f);  // the plain mean lies between the two
+  ModeGuard g;
+  const Particle mode = g.modeMean(f, boxes);
+  CHECK(mode.p[0] == Approx(102.f).margin(1.f));
+}
+
+TEST_CASE("FastMotion: in 2D every 10th particle jumps after a learnt frame only",
+          "[core][fastmotion]") {
+  FastMotion fm;
+  fm.configure(true);
+  fm.start();
+  MotionModel2d m;
+  Rng rng(1);
+  fm.beginFrame(false, kFrameS);
+  REQUIRE(fm.jumping());
+  double jumped = 0.0;
+  for (int i = 0; i < 200; ++i) {
+    Particle q = at2d(100.f, 100.f, 40.f, 40.f);
+    fm.jump2d(i, q, m, rng);
+    const float d = std::hypot(q.p[0] - 100.f, q.p[1] - 100.f);
+    if (i % FastMotion::kEvery == 1) {
+      jumped += d;
+      CHECK(q.v[0] == Approx(q.p[0] - 100.f).margin(1e-4));  // taken into the velocity too
+    } else {
+      CHECK(d == 0.f);
+    }
+  }
+  // Jumps of 3 x the position noise (0.09 x 40 px): about 3.6 px per axis on average.
+  CHECK(jumped / 20.0 > 4.0);
+  fm.endFrame(false);  // not learnt: no jumps next frame
+  fm.beginFrame(false, kFrameS);
+  CHECK_FALSE(fm.jumping());
+  FastMotion off;
+  off.start();
+  off.beginFrame(false, kFrameS);
+  CHECK_FALSE(off.jumping());
+}
+
+TEST_CASE("FastMotion: in 3D jumps only with frames far apart, and one onto another surface is undone",
+          "[core][fastmotion]") {
+  FastMotion fm;
+  fm.configure(true);
+  fm.start();
+  fm.beginFrame(true, kFrameS);
+  CHECK_FALSE(fm.jumping());  // 30 fps: the AR(1) model keeps up
+  fm.beginFrame(true, 0.1f);
+  REQUIRE(fm.jumping());
+  MotionModel3d m;
+  Rng rng(2);
+  Particle q;
+  q.p[2] = 2000.f;
+  q.size[0] = 200.f;
+  q.size[1] = 300.f;
+  const Particle before = q;
+  fm.jump3d(1, q, m, rng, 0.1f);
+  CHECK(q.p[0] != before.p[0]);
+  Particle near = q;
+  near.p[2] = 2100.f;  // 5% deeper: the same surface
+  CHECK_FALSE(fm.undoOffSurface(1, near));
+  Particle far = q;
+  far.p[2] = 2500.f;  // 25% deeper: the wall behind
+  REQUIRE(fm.undoOffSurface(1, far));
+  CHECK(far.p[0] == before.p[0]);
+  CHECK(far.p[2] == before.p[2]);
+  Particle other = q;
+  other.p[2] = 2500.f;
+  CHECK_FALSE(fm.undoOffSurface(2, other));  // not a jumper
+}
+
+TEST_CASE("FastMotion: dropped frames are counted from the timestamps (2D)", "[core][fastmotion]") {
+  FastMotion fm;
+  fm.configure(true);
+  fm.start();
+  uint64_t t = 1000000;
+  for (int i = 0; i < 5; ++i, t += 33333) CHECK(fm.framesElapsed(false, t, t + 33333) == 1);
+  CHECK(fm.framesElapsed(false, t, t + 66666) == 2);
+  CHECK(fm.framesElapsed(true, t, t + 66666) == 1);  // 3D: the AR(1) model takes dt
+  FastMotion off;
+  off.start();
+  CHECK(off.framesElapsed(false, t, t + 100000) == 1);
+}
+
+TEST_CASE("LostSearch: fresh draws, half anywhere, half around the last estimate",
+          "[core][lostsearch]") {
+  SearchView view;
+  view.imageW = 640;
+  view.imageH = 480;
+  const Particle last = at2d(320.f, 240.f, 40.f, 40.f);
+  Rng rng(5);
+  int nearCount = 0, wideFar = 0;
+  for (int i = 0; i < 400; i += LostSearch::kEvery) {
+    REQUIRE(LostSearch::drawsAnew(i));
+    const Particle q = LostSearch::draw(i, last, 0, view, rng);
+    CHECK(q.v[0] == 0.f);
+    CHECK(q.p[0] >= 0.f);
+    CHECK(q.p[0] <= 640.f);
+    const float d = std::hypot(q.p[0] - 320.f, q.p[1] - 240.f);
+    if ((i / LostSearch::kEvery) % 2 == 0)
+      wideFar += d > 100.f ? 1 : 0;
+    else
+      nearCount += d < 80.f ? 1 : 0;  // radius 0.5 x 40 px: within 4 sigma
+  }
+  CHECK_FALSE(LostSearch::drawsAnew(1));
+  CHECK(nearCount == 100);
+  CHECK(wideFar > 60);  // most of the image is over 100 px away
+}
+
+TEST_CASE("LostSearch: a 3D draw keeps the depth and lands on a ray inside the image",
+          "[core][lostsearch]") {
+  SearchView view;
+  view.is3d = true;
+  view.k = kKinectV1Intrinsics;
+  view.imageW = 640;
+  view.imageH = 480;
+  Particle last;
+  last.p[2] = 2500.f;
+  last.size[0] = 200.f;
+  last.size[1] = 400.f;
+  Rng rng(6);
+  for (int i = 0; i < 40; i += LostSearch::kEvery) {
+    const Particle q = LostSearch::draw(i, last, 3, view, rng);
+    CHECK(q.p[2] == 2500.f);
+    const Box b = view.window(q);
+    const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
+    CHECK(u == Approx(std::min(640.f, std::max(0.f, u))).margin(0.01f));
+    CHECK(v >= -0.01f);
+    CHECK(v <= 480.01f);
+  }
+}
+
+TEST_CASE("LostSearch: windows mostly outside the image are not scored", "[core][lostsearch]") {
+  CHECK(LostSearch::insideEnough(Box{10.f, 10.f, 50.f, 50.f}, 640, 480));
+  CHECK(LostSearch::insideEnough(Box{-5.f, 10.f, 50.f, 50.f}, 640, 480));  // 90% inside
+  CHECK_FALSE(LostSearch::insideEnough(Box{-25.f, 10.f, 50.f, 50.f}, 640, 480));  // half
+}
+
+TEST_CASE("LostSearch: the best fresh windows climb to the score's peak", "[core][lostsearch]") {
+  static ParticleFilter f;
+  static Box boxes[kMaxParticles];
+  static float scores[kMaxParticles];
+  static uint8_t valid[kMaxParticles];
+  SearchView view;
+  view.imageW = 640;
+  view.imageH = 480;
+  const float peakX = 300.f, peakY = 200.f;  // top-left of the best window
+  auto score = [&](const Box& b) {
+    return 1.f - 0.01f * (std::fabs(b.x - peakX) + std::fabs(b.y - peakY));
+  };
+  const int n = 40;
+  f.setSize(n);
+  for (int i = 0; i < n; ++i) {
+    // Fresh windows (even i) 8-20 px off the peak; the rest far away.
+    const float off = i % 2 == 0 ? 8.f + static_cast<float>(i % 7) * 2.f : 200.f;
+    f[i] = at2d(peakX + off + 20.f, peakY - off + 20.f, 40.f, 40.f);
+    boxes[i] = view.window(f[i]);
+    scores[i] = score(boxes[i]);
+    valid[i] = 1;
+  }
+  const PixelRect roi{0, 0, 640, 480};
+  int scoredAfter = 0;
+  auto counting = [&](const Box& b) {
+    ++scoredAfter;
+    return score(b);
+  };
+  LostSearch::refine(n, roi, view, f, boxes, scores, valid, counting);
+  int climbed = 0;
+  for (int i = 0; i < n; i += 2) {
+    if (scores[i] > 0.95f) ++climbed;
+    // The particle moved with its window, and the score is the window's.
+    CHECK(boxes[i].x == Approx(f[i].p[0] - 20.f));
+    CHECK(scores[i] == Approx(score(boxes[i])));
+  }
+  CHECK(climbed >= tuning::search::kRefineWindows);  // the best 8 reach the peak's top
+  CHECK(scoredAfter <= tuning::search::kRefineWindows * tuning::search::kRefineSteps * 4);
+  for (int i = 1; i < n; i += 2) CHECK(scores[i] < 0.f);  // not fresh: untouched
+}
+
+TEST_CASE("DepthMedian: the median of the valid depth inside the box, to 10 mm",
+          "[core][depthmedian]") {
+  std::vector<uint16_t> px(100 * 100, 0);
+  for (int y = 10; y < 30; ++y)
+    for (int x = 10; x < 30; ++x) px[y * 100 + x] = (x < 25) ? 1503 : 3000;  // 300 near, 100 far
+  const DepthView d{px.data(), 100, 100, 100};
+  static DepthMedian m;
+  float z = 0.f;
+  REQUIRE(m.of(d, Box{0.f, 0.f, 50.f, 50.f}, &z));  // holes (0) do not count
+  CHECK(z == 1505.f);
+  CHECK_FALSE(m.of(d, Box{50.f, 50.f, 40.f, 40.f}, &z));  // no valid pixel
+}
+
+TEST_CASE("ScanOrder: windows by 8 px row band, stable within a band", "[core][scanorder]") {
+  const Box boxes[5] = {{0.f, 40.f, 8.f, 8.f},
+                        {0.f, 3.f, 8.f, 8.f},
+                        {0.f, 17.f, 8.f, 8.f},
+                        {0.f, 1.f, 8.f, 8.f},
+                        {0.f, -30.f, 8.f, 8.f}};
+  static ScanOrder s;
+  const uint16_t* order = s.sort(boxes, 5, 0);
+  CHECK(order[0] == 1);  // band 0: 1, 3, 4 (above the ROI counts as band 0), in index order
+  CHECK(order[1] == 3);
+  CHECK(order[2] == 4);
+  CHECK(order[3] == 2);  // band 2
+  CHECK(order[4] == 0);  // band 5
+}
