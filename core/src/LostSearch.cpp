@@ -8,7 +8,7 @@ Particle LostSearch::draw(int i, const Particle& last, int framesLost, const Sea
                           Rng& rng) {
   const bool wide = (i / kEvery) % 2 == 0;
   Particle q = last;
-  q.v[0] = q.v[1] = q.v[2] = 0.f;
+  q.v.setZero();
   const float iw = static_cast<float>(view.imageW), ih = static_cast<float>(view.imageH);
   float u, v;
   if (wide) {
@@ -16,15 +16,13 @@ Particle LostSearch::draw(int i, const Particle& last, int framesLost, const Sea
     v = rng.uniform(0.f, ih);
   } else {
     const Box a = view.window(last);
-    const float r = fmath::sqrtf(a.w * a.h) *
-                    (0.5f + tuning::search::kGrowth * static_cast<float>(framesLost));
+    const float r =
+        fmath::sqrtf(a.w * a.h) * (0.5f + tuning::search::kGrowth * static_cast<float>(framesLost));
     u = fmath::clampf(a.x + 0.5f * a.w + r * rng.gaussianFast(), 0.f, iw);
     v = fmath::clampf(a.y + 0.5f * a.h + r * rng.gaussianFast(), 0.f, ih);
   }
   if (view.is3d) {
-    const float z = q.p[2];
-    q.p[0] = (u - view.k.cx) * z / view.k.fx;
-    q.p[1] = (v - view.k.cy) * z / view.k.fy;
+    q.p = backProject(view.k, u, v, q.p.z());
   } else {
     const float sc = fmath::fastExp(tuning::search::kScaleNoise2d * rng.gaussianFast());
     q.p[0] = u;

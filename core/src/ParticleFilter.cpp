@@ -71,12 +71,12 @@ void MotionModel3d::jump(Particle& q, Rng& rng, float dtS, float scale) const {
 }
 
 Box projectCylinder(const Particle& q, const CameraIntrinsics& k) {
-  const float z = q.p[2];
+  const float z = q.p.z();
   if (!(z > 50.f)) return Box{};
   const float inv = 1.f / z;
-  const float u = k.fx * q.p[0] * inv + k.cx, v = k.fy * q.p[1] * inv + k.cy;
+  const Eigen::Vector2f c = project(k, q.p);
   const float w = k.fx * q.size[0] * inv, h = k.fy * q.size[1] * inv;
-  return Box{u - 0.5f * w, v - 0.5f * h, w, h};
+  return Box{c.x() - 0.5f * w, c.y() - 0.5f * h, w, h};
 }
 
 Particle cylinderFromBox(const Box& b, float surfaceMm, const CameraIntrinsics& k) {
@@ -84,12 +84,8 @@ Particle cylinderFromBox(const Box& b, float surfaceMm, const CameraIntrinsics& 
   const float D = b.w * surfaceMm / (k.fx - 0.5f * b.w);
   const float zc = surfaceMm + 0.5f * D;
   const float H = b.h * zc / k.fy;
-  const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
-  q.p[0] = (u - k.cx) * zc / k.fx;
-  q.p[1] = (v - k.cy) * zc / k.fy;
-  q.p[2] = zc;
-  q.size[0] = D;
-  q.size[1] = H;
+  q.p = backProject(k, b.x + 0.5f * b.w, b.y + 0.5f * b.h, zc);
+  q.size = Eigen::Vector2f(D, H);
   return q;
 }
 
@@ -127,14 +123,13 @@ bool correctDepth(Particle& q, const IntegralChannels& ch, const CameraIntrinsic
   if (!(d > 0.f)) return false;
   const float zNew = d + 0.5f * q.size[0];
   const float s = zNew / q.p[2];
+  // Along the viewing ray: the centre scaled about the camera.
+  const Eigen::Vector3f moved = q.p * s;
   // A frame this soon after the last (a repeated or near-duplicate frame) says nothing
   // about velocity: move / dt would fling the particle (200 us: 12 m/s on average).
   const float invDt = dtS >= kMinVelocityDtS ? 1.f / dtS : 0.f;
-  for (int a = 0; a < 3; ++a) {
-    const float moved = q.p[a] * s;
-    q.v[a] += (moved - q.p[a]) * invDt;
-    q.p[a] = moved;
-  }
+  q.v += (moved - q.p) * invDt;
+  q.p = moved;
   return true;
 }
 
@@ -176,7 +171,6 @@ int ParticleFilter::argmaxWeight() const {
 
 Particle ParticleFilter::weightedMean(const uint8_t* include) const {
   Particle m;
-  m.size[0] = m.size[1] = 0.f;
   float total = 0.f;
   for (int i = 0; i < _n; ++i)
     if (include == nullptr || include[i] != 0) total += _w[i];
@@ -185,12 +179,9 @@ Particle ParticleFilter::weightedMean(const uint8_t* include) const {
   for (int i = 0; i < _n; ++i) {
     if (include != nullptr && include[i] == 0) continue;
     const float w = _w[i] * inv;
-    for (int a = 0; a < 3; ++a) {
-      m.p[a] += w * _p[i].p[a];
-      m.v[a] += w * _p[i].v[a];
-    }
-    m.size[0] += w * _p[i].size[0];
-    m.size[1] += w * _p[i].size[1];
+    m.p += w * _p[i].p;
+    m.v += w * _p[i].v;
+    m.size += w * _p[i].size;
   }
   return m;
 }

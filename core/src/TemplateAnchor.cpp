@@ -123,8 +123,7 @@ Box TemplateAnchor::correct(const FrameTables& t, const Box& est) {
   return Box{ncx - 0.5f * w, ncy - 0.5f * h, w, h};
 }
 
-void TemplateAnchor::moveCloud(const Box& from, const Box& to, ParticleFilter& filter,
-                               Box* boxes) {
+void TemplateAnchor::moveCloud(const Box& from, const Box& to, ParticleFilter& filter, Box* boxes) {
   constexpr float g = tuning::templateAnchor::kCloudGain;
   if (!(g > 0.f) || from.empty() || to.empty()) return;
   const float sw = fmath::fastExp(g * fmath::fastLog(to.w / from.w));

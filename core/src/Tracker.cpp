@@ -382,7 +382,7 @@ TrackResult Tracker::update(const Frame& frame) {
   if (_state == TrackState::Lost || wasLost) {
     // Searching (or just found): forget velocities, including the jumps the depth
     // correction gave search particles, so the cloud spreads around where it is.
-    for (int i = 0; i < n; ++i) _filter[i].v[0] = _filter[i].v[1] = _filter[i].v[2] = 0.f;
+    for (int i = 0; i < n; ++i) _filter[i].v.setZero();
   }
   if (!e.box.empty()) _lastBox = e.box;
 

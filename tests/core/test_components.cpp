@@ -28,7 +28,8 @@ Particle at2d(float u, float v, float w, float h) {
 }
 }  // namespace
 
-TEST_CASE("DepthGuard: a jump off the confirmed depth either way is flagged", "[core][depthguard]") {
+TEST_CASE("DepthGuard: a jump off the confirmed depth either way is flagged",
+          "[core][depthguard]") {
   DepthGuard g;
   g.reset(2000.f);
   CHECK_FALSE(g.jumped(2000.f));
@@ -42,7 +43,8 @@ TEST_CASE("DepthGuard: a jump off the confirmed depth either way is flagged", "[
   CHECK(g.confirmedMm() == 2700.f);
 }
 
-TEST_CASE("DepthGuard: learning follows smooth motion in depth, not a slide", "[core][depthguard]") {
+TEST_CASE("DepthGuard: learning follows smooth motion in depth, not a slide",
+          "[core][depthguard]") {
   DepthGuard g;
   g.reset(2000.f);
   CHECK(g.learnable(2200.f));  // within 12%
@@ -139,8 +141,9 @@ TEST_CASE("FastMotion: in 2D every 10th particle jumps after a learnt frame only
   CHECK_FALSE(off.jumping());
 }
 
-TEST_CASE("FastMotion: in 3D jumps only with frames far apart, and one onto another surface is undone",
-          "[core][fastmotion]") {
+TEST_CASE(
+    "FastMotion: in 3D jumps only with frames far apart, and one onto another surface is undone",
+    "[core][fastmotion]") {
   FastMotion fm;
   fm.configure(true);
   fm.start();
@@ -233,7 +236,7 @@ TEST_CASE("LostSearch: a 3D draw keeps the depth and lands on a ray inside the i
 
 TEST_CASE("LostSearch: windows mostly outside the image are not scored", "[core][lostsearch]") {
   CHECK(LostSearch::insideEnough(Box{10.f, 10.f, 50.f, 50.f}, 640, 480));
-  CHECK(LostSearch::insideEnough(Box{-5.f, 10.f, 50.f, 50.f}, 640, 480));  // 90% inside
+  CHECK(LostSearch::insideEnough(Box{-5.f, 10.f, 50.f, 50.f}, 640, 480));         // 90% inside
   CHECK_FALSE(LostSearch::insideEnough(Box{-25.f, 10.f, 50.f, 50.f}, 640, 480));  // half
 }
 

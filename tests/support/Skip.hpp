@@ -19,9 +19,9 @@ int& skipCount();
 }  // namespace cuetrack::test
 
 // A statement: prints "SKIPPED: <reason>" to stderr and returns from the test case.
-#define CUETRACK_SKIP(reason)                                                    \
-  do {                                                                           \
-    ++::cuetrack::test::skipCount();                                             \
-    WARN("SKIPPED: " << reason);                                                 \
-    return;                                                                      \
+#define CUETRACK_SKIP(reason)        \
+  do {                               \
+    ++::cuetrack::test::skipCount(); \
+    WARN("SKIPPED: " << reason);     \
+    return;                          \
   } while (false)

@@ -30,8 +30,7 @@ class DepthGuard {
     return zMm < r * _confirmedMm || r * zMm > _confirmedMm;
   }
   bool learnable(float zMm) const {
-    return !_learnCheck ||
-           depthWithin(zMm, _learnRefMm, 1.f + tuning::depthGuard::kLearnMaxChange);
+    return !_learnCheck || depthWithin(zMm, _learnRefMm, 1.f + tuning::depthGuard::kLearnMaxChange);
   }
   // After the decision on a frame dtS after the last: `confirmed` when the estimate at
   // zMm was learnt or found again, `tracking` when the target is not lost.

@@ -1,4 +1,5 @@
-// Boxes in pixels and the pinhole camera model.
+// Boxes in pixels and the pinhole camera's intrinsics: plain values, shared with
+// platform/ and apps/ (the camera model's 3D maths is in Camera.hpp).
 #pragma once
 
 namespace cuetrack {
@@ -28,6 +29,7 @@ inline float overlap(const Box& a, const Box& b) {
 }
 
 // Pinhole intrinsics of the colour image (depth is registered to it).
+// Camera coordinates [mm]: x right, y down, z forward along the optical axis.
 struct CameraIntrinsics {
   float fx = 0.f, fy = 0.f;  // focal lengths [px]
   float cx = 0.f, cy = 0.f;  // principal point [px]

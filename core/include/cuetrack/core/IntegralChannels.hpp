@@ -24,8 +24,8 @@ PixelRect clipBox(const Box& b, int w, int h);
 inline PixelRect unite(const PixelRect& a, const PixelRect& b) {
   if (a.width() <= 0 || a.height() <= 0) return b;
   if (b.width() <= 0 || b.height() <= 0) return a;
-  return PixelRect{a.x0 < b.x0 ? a.x0 : b.x0, a.y0 < b.y0 ? a.y0 : b.y0,
-                   a.x1 > b.x1 ? a.x1 : b.x1, a.y1 > b.y1 ? a.y1 : b.y1};
+  return PixelRect{a.x0 < b.x0 ? a.x0 : b.x0, a.y0 < b.y0 ? a.y0 : b.y0, a.x1 > b.x1 ? a.x1 : b.x1,
+                   a.y1 > b.y1 ? a.y1 : b.y1};
 }
 
 class IntegralChannels {

@@ -54,9 +54,8 @@ class LostSearch {
 };
 
 template <typename ScoreFn>
-void LostSearch::refine(int n, const PixelRect& roi, const SearchView& view,
-                        ParticleFilter& filter, Box* boxes, float* scores, const uint8_t* valid,
-                        ScoreFn&& score) {
+void LostSearch::refine(int n, const PixelRect& roi, const SearchView& view, ParticleFilter& filter,
+                        Box* boxes, float* scores, const uint8_t* valid, ScoreFn&& score) {
   int top[kMaxSearchRefineWindows];
   const int nt = best(n, scores, valid, top);
   for (int t = 0; t < nt; ++t) {

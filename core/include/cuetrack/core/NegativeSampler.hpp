@@ -21,9 +21,11 @@ class NegativeSampler {
 
   struct Params {
     float nearOverlap = tuning::negatives::kNearOverlap;  // near misses overlap less than this
-    float shrunkScale = tuning::negatives::kShrunkScale;  // > 0: near misses scaled by this or 1/this
-    bool anchored2d = true;  // 2D: ... anchored at the start, centre or end per axis
-    float shiftedFraction = tuning::negatives::kShiftedFraction;  // > 0: shifted by this of the side
+    float shrunkScale =
+        tuning::negatives::kShrunkScale;  // > 0: near misses scaled by this or 1/this
+    bool anchored2d = true;               // 2D: ... anchored at the start, centre or end per axis
+    float shiftedFraction =
+        tuning::negatives::kShiftedFraction;  // > 0: shifted by this of the side
   };
   static Params paramsOf(const TrackerConfig& c);
 

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 
+#include "cuetrack/core/Camera.hpp"
 #include "cuetrack/core/Config.hpp"
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
@@ -19,9 +20,9 @@
 namespace cuetrack {
 
 struct Particle {
-  float p[3] = {0.f, 0.f, 0.f};
-  float v[3] = {0.f, 0.f, 0.f};
-  float size[2] = {0.f, 0.f};
+  Eigen::Vector3f p = Eigen::Vector3f::Zero();
+  Eigen::Vector3f v = Eigen::Vector3f::Zero();
+  Eigen::Vector2f size = Eigen::Vector2f::Zero();
 };
 
 // 2D: first-order AR on the window centre plus scale and aspect random walks.

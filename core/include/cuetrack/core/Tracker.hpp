@@ -116,7 +116,7 @@ class Tracker {
   int _imageW = 0, _imageH = 0;
   CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
-  FastMotion _fast{};        // fastMotion: jumping particles, coasting over dropped frames
+  FastMotion _fast{};  // fastMotion: jumping particles, coasting over dropped frames
   Box _lastBox{};
   SizeFilter2d _sizeFilter{};      // 2D: the estimate's size, smoothed
   TemplateAnchor _templateAnchor;  // 2D, scaleAnchor2d: the init box's grey template
@@ -134,10 +134,10 @@ class Tracker {
   float _scores[kMaxParticles];
   uint8_t _valid[kMaxParticles];
   ScanOrder _scanOrder;
-  ModeGuard _modeGuard;            // modeGuard: a split cloud's best mode
+  ModeGuard _modeGuard;  // modeGuard: a split cloud's best mode
   float _featureErrors[kMaxPoolFeatures];
   NegativeSampler _negatives{};
-  CylinderSizer _sizer{};  // adaptCylinderSize: D, H and the centre follow the depth silhouette
+  CylinderSizer _sizer{};    // adaptCylinderSize: D, H and the centre follow the depth silhouette
   DepthMedian _depthMedian;  // where a new 3D track stands
 };
 // Everything together (Config.hpp's list of big buffers plus the small ones): 10,531,768 B

@@ -17,7 +17,7 @@ inline constexpr float kLearnConfidence = 0.55f;
 inline constexpr float kLearnConcentration = 0.5f;
 
 namespace training {
-inline constexpr int kExamples = 140;        // the paper's training set size, <= kMaxTrainingExamples
+inline constexpr int kExamples = 140;  // the paper's training set size, <= kMaxTrainingExamples
 inline constexpr int kNegativesPerUpdate = 10;  // negatives added per learning step
 // The init box plus slightly shifted and rescaled copies (by N(0, jitter^2) of the side),
 // kept for good. 2D needs more, closer copies: the classifier alone places its window.
@@ -25,8 +25,8 @@ inline constexpr int kInitialPositives3d = 9;
 inline constexpr float kInitialJitter3d = 0.03f;
 inline constexpr int kInitialPositives2d = 17;
 inline constexpr float kInitialJitter2d = 0.015f;
-inline constexpr float kAnchorWeight = 2.f;  // boosting weight of a kept initial positive
-inline constexpr int kBoostCandidates = 48;  // GentleBoost rounds after the first search these
+inline constexpr float kAnchorWeight = 2.f;     // boosting weight of a kept initial positive
+inline constexpr int kBoostCandidates = 48;     // GentleBoost rounds after the first search these
 inline constexpr int kBoostRefreshRounds = 12;  // ... and every this many rounds all again
 }  // namespace training
 
@@ -59,7 +59,7 @@ inline constexpr float kLostSpread = 3.f;
 inline constexpr float kRoiMarginSides = 1.6f;
 
 namespace fastMotion {
-inline constexpr int kJumpEvery = 10;   // one particle in this many jumps ...
+inline constexpr int kJumpEvery = 10;     // one particle in this many jumps ...
 inline constexpr float kJumpScale = 3.f;  // ... by this many times the position noise
 // 3D: only with frames further apart than this [s] (at 30 fps the AR(1) model keeps up) ...
 inline constexpr float kJumpMinDtS = 0.045f;
@@ -68,19 +68,19 @@ inline constexpr float kJumpMinDtS = 0.045f;
 inline constexpr float kJumpMaxDepthChange = 0.15f;
 }  // namespace fastMotion
 
-namespace cylinder {  // adaptCylinderSize
+namespace cylinder {                         // adaptCylinderSize
 inline constexpr float kSizeNoise = 0.002f;  // std of ln D and ln H per frame
 inline constexpr float kSizeGain = 0.1f;     // per learnt frame, ln D, ln H move this part
                                              // of the way to the silhouette in depth
 inline constexpr float kCentreGain = 0.2f;   // ... and the window's centre this part
 }  // namespace cylinder
 
-namespace size2d {  // the alpha-beta filter on the 2D estimate's ln w, ln h
+namespace size2d {                         // the alpha-beta filter on the 2D estimate's ln w, ln h
 inline constexpr float kGain = 0.3f;       // alpha
 inline constexpr float kRateGain = 0.05f;  // beta: steady zooms followed without lag
 }  // namespace size2d
 
-namespace templateAnchor {  // scaleAnchor2d
+namespace templateAnchor {                  // scaleAnchor2d
 inline constexpr int kScaleSteps = 2;       // K: a (2K+1)^2 ladder of widths x heights
 inline constexpr float kScaleStep = 0.04f;  // ladder step of ln w, ln h
 inline constexpr float kMinNcc = 0.85f;     // best match needed to move anything
@@ -98,7 +98,7 @@ inline constexpr float kMinConfidence = 0.7f;
 inline constexpr float kModeOverlap = 0.5f;  // the mode: particles overlapping the best this much
 }  // namespace modeGuard
 
-namespace lost {  // LostDetector
+namespace lost {                             // LostDetector
 inline constexpr float kLostBelow = 0.42f;   // confidence under which a frame is a miss
 inline constexpr int kLostAfter = 4;         // misses in a row that make the target lost
 inline constexpr float kFoundAbove = 0.58f;  // confidence of a hit while lost
@@ -116,7 +116,7 @@ namespace search {  // re-acquisition while lost
 inline constexpr int kEvery = 2;
 inline constexpr float kGrowth = 0.25f;
 inline constexpr float kScaleNoise2d = 0.15f;  // 2D: std of ln(scale) of a fresh window
-inline constexpr float kInside = 0.8f;  // a window must lie this much inside the image
+inline constexpr float kInside = 0.8f;         // a window must lie this much inside the image
 // refineSearch: the best this many fresh windows climb to their peak, in steps of
 // kRefineStep of their side, halved when no neighbour scores higher, kRefineSteps times.
 inline constexpr int kRefineWindows = 8;
