@@ -13,6 +13,7 @@
 #include "cuetrack/platform/linux/SerialPort.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 #include "cuetrack/platform/linux/StderrReporter.hpp"
+#include "cuetrack/platform/mavlink/MavlinkLink.hpp"
 
 namespace cuetrack::app {
 
@@ -104,12 +105,22 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     stdoutSink.attachStdout(platform::TextFormat::Line);
     pipeline.addSink(&stdoutSink);
   }
-  static SerialLink* link = nullptr;
-  if (opt.serialPath) {
+  static platform::TrackLink* link = nullptr;
+  if (opt.serialPath && opt.protocol == Protocol::Mavlink) {
+    platform::mavlink::LinkConfig mc;
+    mc.sysId = static_cast<uint8_t>(opt.mavSysId);
+    mc.compId = static_cast<uint8_t>(opt.mavCompId);
+    mc.mount.rollDeg = opt.mountDeg[0];
+    mc.mount.pitchDeg = opt.mountDeg[1];
+    mc.mount.yawDeg = opt.mountDeg[2];
+    for (int i = 0; i < 3; ++i) mc.mount.offsetM[i] = opt.mountOffsetM[i];
+    static platform::mavlink::MavlinkLink mavlinkLink(port, clock, reporter, mc);
+    link = &mavlinkLink;
+  } else if (opt.serialPath) {
     static SerialLink serialLink(port, clock, reporter);
     link = &serialLink;
-    pipeline.attachLink(link);
   }
+  if (link) pipeline.attachLink(link);
 
   StepResult r = StepResult::Continue;
   while (r == StepResult::Continue && !platform::stopRequested()) r = pipeline.step();

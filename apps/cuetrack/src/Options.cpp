@@ -39,11 +39,27 @@ bool parseBox(const char* s, Box* out) {
   return true;
 }
 
+// Three finite numbers "A,B,C", each within +-limit.
+bool parseTriple(const char* s, float limit, float out[3]) {
+  for (int i = 0; i < 3; ++i) {
+    char* end = nullptr;
+    out[i] = std::strtof(s, &end);
+    if (end == s || !std::isfinite(out[i]) || std::fabs(out[i]) > limit) return false;
+    s = end;
+    if (i < 2) {
+      if (*s != ',') return false;
+      ++s;
+    }
+  }
+  return *s == '\0';
+}
+
 }  // namespace
 
 const char* usageText() {
   return "usage: cuetrack [options]\n"
-         "Tracks an object in RGB-D frames and streams the track (docs/serial-protocol.md).\n"
+         "Tracks an object in RGB-D frames and streams the track (docs/serial-protocol.md,\n"
+         "docs/mavlink.md).\n"
          "\n"
          "source (default: the Kinect when one is plugged in, else the synthetic scene 'moving'):\n"
          "  --source kinect[:colour]|synth[:SCENE]|PATH\n"
@@ -62,6 +78,15 @@ const char* usageText() {
          "  --serial DEV       stream binary track messages, accept commands (8N1 raw)\n"
          "  --baud N           9600 19200 38400 57600 115200 (default) 230400 460800 500000\n"
          "                     576000 921600\n"
+         "  --protocol P       on --serial: cuetrack (default, docs/serial-protocol.md) or\n"
+         "                     mavlink (MAVLink 2 camera component, docs/mavlink.md)\n"
+         "  --mavlink-sysid N  our MAVLink system id, 1..255 (default 1, the vehicle's)\n"
+         "  --mavlink-compid N our MAVLink component id, 1..255 (default 100, CAMERA)\n"
+         "  --mavlink-mount R,P,Y\n"
+         "                     camera roll, pitch, yaw on the vehicle [deg] (default 0,0,0:\n"
+         "                     looking forward; 0,-90,0: looking down, image top forward)\n"
+         "  --mavlink-offset X,Y,Z\n"
+         "                     camera position on the vehicle, body frame FRD [m]\n"
          "  --out FILE         CSV, one row per frame ('-' = stdout)\n"
          "  --stdout           one line per frame on stdout as well\n"
          "run:\n"
@@ -141,6 +166,40 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
         return ParseResult::Error;
       }
       out->baud = static_cast<int>(n);
+    } else if (std::strcmp(a, "--protocol") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (std::strcmp(v, "cuetrack") == 0) {
+        out->protocol = Protocol::Cuetrack;
+      } else if (std::strcmp(v, "mavlink") == 0) {
+        out->protocol = Protocol::Mavlink;
+      } else {
+        std::snprintf(err, errLen, "--protocol %s: expected cuetrack or mavlink", v);
+        return ParseResult::Error;
+      }
+    } else if (std::strcmp(a, "--mavlink-sysid") == 0 || std::strcmp(a, "--mavlink-compid") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseLong(v, 1, 255, &n)) {
+        std::snprintf(err, errLen, "%s %s: expected an id 1..255", a, v);
+        return ParseResult::Error;
+      }
+      (std::strcmp(a, "--mavlink-sysid") == 0 ? out->mavSysId : out->mavCompId) =
+          static_cast<int>(n);
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-mount") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseTriple(v, 360.f, out->mountDeg)) {
+        std::snprintf(err, errLen,
+                      "--mavlink-mount %s: expected ROLL,PITCH,YAW [deg], each within +-360", v);
+        return ParseResult::Error;
+      }
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-offset") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseTriple(v, 100.f, out->mountOffsetM)) {
+        std::snprintf(err, errLen, "--mavlink-offset %s: expected X,Y,Z [m], each within +-100", v);
+        return ParseResult::Error;
+      }
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
     } else if (std::strcmp(a, "--out") == 0) {
       if (!value(&v)) return ParseResult::Error;
       out->outPath = v;
@@ -175,6 +234,15 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       (out->source == nullptr ||
        (std::strcmp(out->source, "kinect") != 0 && std::strncmp(out->source, "kinect:", 7) != 0))) {
     std::snprintf(err, errLen, "--wait-camera needs --source kinect or kinect:colour");
+    return ParseResult::Error;
+  }
+  // A setting that would do nothing is refused rather than ignored.
+  if (out->protocol == Protocol::Mavlink && out->serialPath == nullptr) {
+    std::snprintf(err, errLen, "--protocol mavlink needs --serial DEV");
+    return ParseResult::Error;
+  }
+  if (out->mavlinkOnlyOption && out->protocol != Protocol::Mavlink) {
+    std::snprintf(err, errLen, "%s needs --protocol mavlink", out->mavlinkOnlyOption);
     return ParseResult::Error;
   }
   return ParseResult::Run;
