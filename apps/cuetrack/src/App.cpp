@@ -129,13 +129,20 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   if (link && !link->drain(1000))
     reporter.report("serial: could not send the last messages within 1 s");
   if (!opt.quiet) {
-    std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
-                  static_cast<unsigned>(pipeline.frames()),
-                  platform::stopRequested()      ? "signal"
-                  : r == StepResult::Stopped     ? "STOP command"
-                  : r == StepResult::Done        ? "end of source or --frames"
-                  : r == StepResult::OutputsGone ? "every output failed"
-                                                 : "error");
+    int n = std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
+                          static_cast<unsigned>(pipeline.frames()),
+                          platform::stopRequested()      ? "signal"
+                          : r == StepResult::Stopped     ? "STOP command"
+                          : r == StepResult::Done        ? "end of source or --frames"
+                          : r == StepResult::OutputsGone ? "every output failed"
+                                                         : "error");
+    // What the link managed: a peer that stopped reading shows as tx-dropped.
+    if (link && n > 0 && static_cast<size_t>(n) < sizeof err) {
+      const platform::LinkStats& s = link->stats();
+      std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
+                    "; serial sent %u tx-dropped %u rx-errors %u", static_cast<unsigned>(s.sent),
+                    static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors));
+    }
     reporter.report(err);
   }
   switch (r) {
