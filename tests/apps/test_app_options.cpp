@@ -155,8 +155,9 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
   CHECK(o.mavCompId == 100);
   REQUIRE(parse({"--serial", "/dev/ttyS0", "--protocol", "mavlink", "--mavlink-sysid", "7",
                  "--mavlink-compid", "101", "--mavlink-mount", "0,-90,12.5", "--mavlink-offset",
-                 "0.1,0,-0.05"},
+                 "0.1,0,-0.05", "--mavlink-landing", "angles"},
                 &o, &err) == ParseResult::Run);
+  CHECK_FALSE(o.landingPosition);
   CHECK(o.protocol == Protocol::Mavlink);
   CHECK(o.mavSysId == 7);
   CHECK(o.mavCompId == 101);
@@ -180,6 +181,9 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
        "--mavlink-mount 0,nan,0:"},
       {{"--serial", "x", "--protocol", "mavlink", "--mavlink-offset", "1,2,3x"},
        "--mavlink-offset 1,2,3x:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-landing", "ned"},
+       "--mavlink-landing ned: expected frd or angles"},
+      {{"--serial", "x", "--mavlink-landing", "angles"}, "--mavlink-landing needs --protocol"},
   };
   for (const auto& b : bad) {
     INFO(b.says);

@@ -82,6 +82,8 @@ TEST_CASE("a HEARTBEAT frame byte for byte (the worked example of docs/mavlink.m
   const uint16_t crc = crcAccumulate(50, crc16(w + 1, 18));
   CHECK(w[19] == (crc & 0xFF));
   CHECK(w[20] == (crc >> 8));
+  CHECK(w[19] == 0x46);  // as docs/mavlink.md shows it
+  CHECK(w[20] == 0xA4);
 }
 
 TEST_CASE("trailing zeros are cut from the payload and read back as zeros") {
@@ -345,6 +347,19 @@ TEST_CASE("MavlinkLink: per-frame status and landing target, with the box and an
   CHECK(lt.z == Approx(-0.05f));
   CHECK(lt.distance == Approx(std::sqrt(4.f + 0.01f + 0.0025f)));
   CHECK(lt.frame == kMavFrameBodyFrd);
+  // For PX4: angles and distance only.
+  LinkConfig px4;
+  px4.landingPosition = false;
+  FakeSerialCable cable;
+  MavlinkLink anglesOnly(cable.a(), rig.clock, rig.reporter, px4);
+  anglesOnly.sendFrame(rig.frame(CTP_STATE_TRACKING, 50000));
+  uint8_t buf[256];
+  const IoResult r = cable.b().read(buf, sizeof buf, 0);
+  Parser parser;
+  const auto px4Msgs = parseAll(std::vector<uint8_t>(buf, buf + r.bytes), parser);
+  REQUIRE(px4Msgs.size() == 2);
+  CHECK(unpackLandingTarget(px4Msgs[1].payload).positionValid == 0);
+  CHECK(unpackLandingTarget(px4Msgs[1].payload).angleX == Approx(lt.angleX));
   // Lost: a status saying so, no landing target.
   rig.link.sendFrame(rig.frame(CTP_STATE_LOST, 66666));
   ms = rig.read();

@@ -114,6 +114,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     mc.mount.pitchDeg = opt.mountDeg[1];
     mc.mount.yawDeg = opt.mountDeg[2];
     for (int i = 0; i < 3; ++i) mc.mount.offsetM[i] = opt.mountOffsetM[i];
+    mc.landingPosition = opt.landingPosition;
     static platform::mavlink::MavlinkLink mavlinkLink(port, clock, reporter, mc);
     link = &mavlinkLink;
   } else if (opt.serialPath) {

@@ -87,6 +87,9 @@ const char* usageText() {
          "                     looking forward; 0,-90,0: looking down, image top forward)\n"
          "  --mavlink-offset X,Y,Z\n"
          "                     camera position on the vehicle, body frame FRD [m]\n"
+         "  --mavlink-landing frd|angles\n"
+         "                     LANDING_TARGET with x,y,z in MAV_FRAME_BODY_FRD (default, for\n"
+         "                     ArduPilot) or angles and distance only (for PX4)\n"
          "  --out FILE         CSV, one row per frame ('-' = stdout)\n"
          "  --stdout           one line per frame on stdout as well\n"
          "run:\n"
@@ -192,6 +195,14 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
                       "--mavlink-mount %s: expected ROLL,PITCH,YAW [deg], each within +-360", v);
         return ParseResult::Error;
       }
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-landing") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (std::strcmp(v, "frd") != 0 && std::strcmp(v, "angles") != 0) {
+        std::snprintf(err, errLen, "--mavlink-landing %s: expected frd or angles", v);
+        return ParseResult::Error;
+      }
+      out->landingPosition = std::strcmp(v, "frd") == 0;
       if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
     } else if (std::strcmp(a, "--mavlink-offset") == 0) {
       if (!value(&v)) return ParseResult::Error;

@@ -287,7 +287,7 @@ void MavlinkLink::sendLandingTarget(const FrameReport& r) {
   lt.distance = std::sqrt(bodyM[0] * bodyM[0] + bodyM[1] * bodyM[1] + bodyM[2] * bodyM[2]);
   lt.frame = kMavFrameBodyFrd;
   lt.type = kLandingTargetTypeVisionOther;
-  lt.positionValid = 1;
+  lt.positionValid = _config.landingPosition ? 1 : 0;
   uint8_t p[64];
   transmit(kMsgLandingTarget, p, pack(lt, p));
 }

@@ -28,6 +28,9 @@ struct LinkConfig {
   uint8_t sysId = 1;                  // the vehicle's system id (the autopilot's, usually 1)
   uint8_t compId = kMavCompIdCamera;  // our component id
   CameraMount mount{};
+  // LANDING_TARGET with x, y, z in MAV_FRAME_BODY_FRD (ArduPilot); false: angles and
+  // distance only, position_valid 0 (PX4 reads only that, as an IRLock-style report).
+  bool landingPosition = true;
 };
 
 class MavlinkLink final : public TrackLink {
