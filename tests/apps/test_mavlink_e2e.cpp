@@ -19,6 +19,7 @@
 
 #include "Process.hpp"
 #include "Skip.hpp"
+#include "TempDir.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
 #include "cuetrack/platform/mavlink/MavlinkMessages.hpp"
@@ -39,12 +40,6 @@ namespace {
 
 constexpr int kAppTimeoutMs = 120000;  // generous: 2 cores shared by many builds
 constexpr uint8_t kGcsSys = 255, kGcsComp = 190;
-
-std::string slurp(const std::string& path) {
-  static char buf[1 << 20];
-  if (!readFile(path.c_str(), buf, sizeof buf)) return "";
-  return buf;
-}
 
 std::vector<std::string> csvRows(const std::string& text) {
   std::vector<std::string> out;
@@ -75,20 +70,6 @@ Row parseRow(const std::string& line) {
   r.state = state;
   return r;
 }
-
-struct TempDir {
-  char path[64];
-  TempDir() {
-    std::snprintf(path, sizeof path, "/tmp/cuetrack-mav-XXXXXX");
-    REQUIRE(mkdtemp(path) != nullptr);
-  }
-  ~TempDir() {
-    char cmd[128];
-    std::snprintf(cmd, sizeof cmd, "rm -rf %s", path);
-    if (std::system(cmd) != 0) std::fprintf(stderr, "could not remove %s\n", path);
-  }
-  std::string file(const char* name) const { return std::string(path) + "/" + name; }
-};
 
 // The ground station's end, decoding with the official library.
 struct Gcs {
@@ -171,7 +152,7 @@ TEST_CASE("the official library decodes 100 % of what cuetrack sends; box and an
   REQUIRE(pty.start());
   Gcs gcs;
   REQUIRE(gcs.port.open(pty.b(), 921600));
-  const std::string csv = tmp.file("app.csv"), appErr = tmp.file("app.err");
+  const std::string csv = tmp / "app.csv", appErr = tmp / "app.err";
   ChildProcess app;
   const char* argv[] = {CUETRACK_APP_BIN, "--source", "synth:moving", "--serial", pty.a(),
                         "--baud",         "921600",   "--protocol",   "mavlink",  "--out",
@@ -190,7 +171,7 @@ TEST_CASE("the official library decodes 100 % of what cuetrack sends; box and an
       kAppTimeoutMs));
   int exitStatus = -1;
   REQUIRE(app.wait(kAppTimeoutMs, &exitStatus));
-  INFO(slurp(appErr));
+  INFO(readText(appErr));
   REQUIRE(exitStatus == 0);
   gcs.readSome(50);
 
@@ -200,7 +181,7 @@ TEST_CASE("the official library decodes 100 % of what cuetrack sends; box and an
     INFO("message " << i);
     CHECK(gcs.got[i].seq == static_cast<uint8_t>(gcs.got[i - 1].seq + 1));
   }
-  const std::vector<std::string> rows = csvRows(slurp(csv));
+  const std::vector<std::string> rows = csvRows(readText(csv));
   REQUIRE(rows.size() == 60);
   const CameraIntrinsics k = sceneIntrinsics();
   size_t row = 0;
@@ -257,12 +238,12 @@ TEST_CASE("commands framed by the official library: rectangle, track, point, sto
   REQUIRE(pty.start());
   Gcs gcs;
   REQUIRE(gcs.port.open(pty.b(), 115200));
-  const std::string appErr = tmp.file("app.err");
+  const std::string appErr = tmp / "app.err";
   ChildProcess app;
   const char* argv[] = {CUETRACK_APP_BIN, "--serial", pty.a(),  "--protocol", "mavlink",
                         "--no-gt",        "--frames", "100000", "--quiet",    nullptr};
   REQUIRE(app.start(argv, nullptr, appErr.c_str()));
-  INFO(slurp(appErr));
+  INFO(readText(appErr));
   REQUIRE(gcs.until([](const official::Decoded& d) { return d.msgId == kMsgHeartbeat; }, 30000));
   REQUIRE(gcs.until([](const auto& d) { return status(d, kTrackingStatusIdle); }, 30000));
 
@@ -318,7 +299,7 @@ TEST_CASE("a MAVLink peer that stops reading does not block the tracker; drops a
   REQUIRE(pty.start());
   platform::SerialPort stalled;  // opened, never read
   REQUIRE(stalled.open(pty.b(), 115200));
-  const std::string csv = tmp.file("app.csv"), appErr = tmp.file("app.err");
+  const std::string csv = tmp / "app.csv", appErr = tmp / "app.err";
   ChildProcess app;
   const char* argv[] = {CUETRACK_APP_BIN, "--source",   "synth:moving", "--serial",
                         pty.a(),          "--protocol", "mavlink",      "--out",
@@ -326,10 +307,10 @@ TEST_CASE("a MAVLink peer that stops reading does not block the tracker; drops a
   REQUIRE(app.start(argv, nullptr, appErr.c_str()));
   int exitStatus = -1;
   REQUIRE(app.wait(kAppTimeoutMs, &exitStatus));
-  const std::string err = slurp(appErr);
+  const std::string err = readText(appErr);
   INFO(err);
   CHECK(exitStatus == 0);
-  CHECK(csvRows(slurp(csv)).size() == 2000);  // every frame tracked and written
+  CHECK(csvRows(readText(csv)).size() == 2000);  // every frame tracked and written
   const size_t at = err.find("stopped after 2000 frames");
   REQUIRE(at != std::string::npos);
   const size_t drop = err.find("tx-dropped ", at);

@@ -21,37 +21,27 @@ bool parseLong(const char* s, long lo, long hi, long* out) {
   return true;
 }
 
-bool parseBox(const char* s, Box* out) {
-  float v[4];
-  for (int i = 0; i < 4; ++i) {
-    char* end = nullptr;
-    v[i] = std::strtof(s, &end);
-    // inf, nan and absurd sizes would reach the tracker as a box it "tracks".
-    if (end == s || !std::isfinite(v[i]) || std::fabs(v[i]) > kMaxBoxPx) return false;
-    s = end;
-    if (i < 3) {
-      if (*s != ',') return false;
-      ++s;
-    }
-  }
-  if (*s != '\0' || !(v[2] > 0.f) || !(v[3] > 0.f)) return false;
-  *out = Box{v[0], v[1], v[2], v[3]};
-  return true;
-}
-
-// Three finite numbers "A,B,C", each within +-limit.
-bool parseTriple(const char* s, float limit, float out[3]) {
-  for (int i = 0; i < 3; ++i) {
+// n finite numbers "A,B,...", each within +-limit.
+bool parseFloats(const char* s, int n, float limit, float* out) {
+  for (int i = 0; i < n; ++i) {
     char* end = nullptr;
     out[i] = std::strtof(s, &end);
+    // inf, nan and absurd values would reach the tracker as something it "tracks".
     if (end == s || !std::isfinite(out[i]) || std::fabs(out[i]) > limit) return false;
     s = end;
-    if (i < 2) {
+    if (i < n - 1) {
       if (*s != ',') return false;
       ++s;
     }
   }
   return *s == '\0';
+}
+
+bool parseBox(const char* s, Box* out) {
+  float v[4];
+  if (!parseFloats(s, 4, kMaxBoxPx, v) || !(v[2] > 0.f) || !(v[3] > 0.f)) return false;
+  *out = Box{v[0], v[1], v[2], v[3]};
+  return true;
 }
 
 }  // namespace
@@ -190,7 +180,7 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
     } else if (std::strcmp(a, "--mavlink-mount") == 0) {
       if (!value(&v)) return ParseResult::Error;
-      if (!parseTriple(v, 360.f, out->mountDeg)) {
+      if (!parseFloats(v, 3, 360.f, out->mountDeg)) {
         std::snprintf(err, errLen,
                       "--mavlink-mount %s: expected ROLL,PITCH,YAW [deg], each within +-360", v);
         return ParseResult::Error;
@@ -206,7 +196,7 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
     } else if (std::strcmp(a, "--mavlink-offset") == 0) {
       if (!value(&v)) return ParseResult::Error;
-      if (!parseTriple(v, 100.f, out->mountOffsetM)) {
+      if (!parseFloats(v, 3, 100.f, out->mountOffsetM)) {
         std::snprintf(err, errLen, "--mavlink-offset %s: expected X,Y,Z [m], each within +-100", v);
         return ParseResult::Error;
       }
