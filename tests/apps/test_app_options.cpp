@@ -158,6 +158,9 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
                  "0.1,0,-0.05", "--mavlink-landing", "angles"},
                 &o, &err) == ParseResult::Run);
   CHECK_FALSE(o.landingPosition);
+  REQUIRE(parse({"--protocol", "mavlink", "--mavlink-udp", "127.0.0.1:14550"}, &o, &err) ==
+          ParseResult::Run);
+  CHECK(std::string(o.mavlinkUdp) == "127.0.0.1:14550");
   CHECK(o.protocol == Protocol::Mavlink);
   CHECK(o.mavSysId == 7);
   CHECK(o.mavCompId == 101);
@@ -169,7 +172,13 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
     std::initializer_list<const char*> args;
     const char* says;
   } bad[] = {
-      {{"--protocol", "mavlink"}, "--protocol mavlink needs --serial DEV"},
+      {{"--protocol", "mavlink"}, "--protocol mavlink needs --serial DEV or --mavlink-udp"},
+      {{"--protocol", "mavlink", "--mavlink-udp", "localhost"},
+       "--mavlink-udp localhost: expected"},
+      {{"--protocol", "mavlink", "--mavlink-udp", "h:70000"}, "--mavlink-udp h:70000: expected"},
+      {{"--protocol", "mavlink", "--mavlink-udp", "h:1", "--serial", "x"},
+       "--serial and --mavlink-udp: one link at a time"},
+      {{"--mavlink-udp", "h:1"}, "--mavlink-udp needs --protocol mavlink"},
       {{"--serial", "x", "--protocol", "mavlink2"}, "--protocol mavlink2: expected"},
       {{"--serial", "x", "--mavlink-sysid", "3"}, "--mavlink-sysid needs --protocol mavlink"},
       {{"--serial", "x", "--protocol", "mavlink", "--mavlink-compid", "0"}, "--mavlink-compid 0:"},

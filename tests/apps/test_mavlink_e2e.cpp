@@ -4,11 +4,17 @@
 //     gap), the status box is the track's, the landing target's angles the intrinsics';
 //   - the three tracking commands it frames start by rectangle, track, point, stop,
 //     each answered by one COMMAND_ACK with the right MAV_RESULT;
-//   - a peer that stops reading does not block the tracker; the drops are counted.
+//   - a peer that stops reading does not block the tracker; the drops are counted;
+//   - --mavlink-udp to a loopback peer: the same, a datagram at a time.
 // Skipped (reported as such) without socat or without the shared folder.
 #include <catch2/catch.hpp>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
 #include <signal.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -316,5 +322,76 @@ TEST_CASE("a MAVLink peer that stops reading does not block the tracker; drops a
   const size_t drop = err.find("tx-dropped ", at);
   REQUIRE(drop != std::string::npos);
   CHECK(std::atoi(err.c_str() + drop + 11) > 0);
+}
+TEST_CASE("--mavlink-udp: the same messages to a loopback peer, commands answered to it") {
+  // The ground station's end: a UDP socket on loopback, decoding with the official library.
+  const int gcs = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  REQUIRE(gcs >= 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  REQUIRE(::bind(gcs, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+  socklen_t len = sizeof addr;
+  REQUIRE(::getsockname(gcs, reinterpret_cast<sockaddr*>(&addr), &len) == 0);
+  char target[32];
+  std::snprintf(target, sizeof target, "127.0.0.1:%u", static_cast<unsigned>(ntohs(addr.sin_port)));
+  TempDir tmp;
+  const std::string appErr = tmp / "app.err";
+  ChildProcess app;
+  const char* argv[] = {CUETRACK_APP_BIN, "--protocol", "mavlink", "--mavlink-udp", target,
+                        "--no-gt",        "--frames",   "100000",  "--quiet",       nullptr};
+  REQUIRE(app.start(argv, nullptr, appErr.c_str()));
+  INFO(readText(appErr));
+  official::Decoder dec;
+  std::vector<official::Decoded> got;
+  int badCrc = 0, notOneMessage = 0;
+  sockaddr_in from{};
+  socklen_t fromLen = sizeof from;
+  auto until = [&](auto pred) {
+    return waitFor(
+        [&] {
+          uint8_t buf[600];
+          pollfd p{gcs, POLLIN, 0};
+          if (::poll(&p, 1, 10) <= 0) return false;
+          fromLen = sizeof from;
+          const ssize_t n =
+              ::recvfrom(gcs, buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&from), &fromLen);
+          // One whole message per datagram, as a router expects.
+          if (n > 0 && (buf[0] != kStx || n != static_cast<ssize_t>(kHeaderBytes + buf[1] + 2)))
+            ++notOneMessage;
+          bool hit = false;
+          for (ssize_t i = 0; i < n; ++i) {
+            official::Decoded d;
+            const int r = dec.push(buf[i], &d);
+            badCrc += r < 0;
+            if (r != 1) continue;
+            got.push_back(d);
+            hit = hit || pred(d);
+          }
+          return hit;
+        },
+        30000);
+  };
+  REQUIRE(until([](const official::Decoded& d) { return d.msgId == kMsgHeartbeat; }));
+  REQUIRE(until([](const official::Decoded& d) { return status(d, kTrackingStatusIdle); }));
+  float p[7] = {0.4375f, 0.5f, 0.5f, 0.625f, 0, 0, 0};
+  uint8_t w[300];
+  const size_t n = official::encodeCommandLong(kGcsSys, kGcsComp, 1, 100, kCmdCameraTrackRectangle,
+                                               p, w, sizeof w);
+  REQUIRE(::sendto(gcs, w, n, 0, reinterpret_cast<sockaddr*>(&from), fromLen) ==
+          static_cast<ssize_t>(n));
+  REQUIRE(until([](const official::Decoded& d) { return ackOf(d, kCmdCameraTrackRectangle); }));
+  REQUIRE(until([](const official::Decoded& d) { return status(d, kTrackingStatusActive); }));
+  CHECK(badCrc == 0);
+  CHECK(notOneMessage == 0);
+  int accepted = 0;
+  for (const auto& d : got)
+    accepted += ackOf(d, kCmdCameraTrackRectangle) && d.ackResult == kResultAccepted;
+  CHECK(accepted == 1);
+  app.signal(SIGTERM);
+  int exitStatus = -1;
+  REQUIRE(app.wait(30000, &exitStatus));
+  CHECK(exitStatus == 0);
+  ::close(gcs);
 }
 #endif

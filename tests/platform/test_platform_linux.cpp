@@ -2,9 +2,12 @@
 // errors, the monotonic clock, the stop signals, the reporters.
 #include <catch2/catch.hpp>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,6 +18,7 @@
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
+#include "cuetrack/platform/linux/UdpSocket.hpp"
 
 using namespace cuetrack::platform;
 
@@ -118,4 +122,42 @@ TEST_CASE("a file-size limit (ulimit -f) is a write error, not a silent death") 
   const int killed = writeOverLimit(false);  // control: the default disposition kills
   CHECK(WIFSIGNALED(killed));
   CHECK(WTERMSIG(killed) == SIGXFSZ);
+}
+
+TEST_CASE("UdpSocket: one datagram per write to a loopback peer, replies read back") {
+  const int peer = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  REQUIRE(peer >= 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  REQUIRE(::bind(peer, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+  socklen_t len = sizeof addr;
+  REQUIRE(::getsockname(peer, reinterpret_cast<sockaddr*>(&addr), &len) == 0);
+  char target[32];
+  std::snprintf(target, sizeof target, "127.0.0.1:%u", static_cast<unsigned>(ntohs(addr.sin_port)));
+  UdpSocket udp;
+  REQUIRE(udp.open(target));
+  CHECK(std::string(udp.name()) == std::string("udp:") + target);
+  const uint8_t a[] = {1, 2, 3}, b[] = {4, 5};
+  REQUIRE(udp.write(a, sizeof a).bytes == 3);
+  REQUIRE(udp.write(b, sizeof b).bytes == 2);
+  uint8_t got[16];
+  sockaddr_in from{};
+  socklen_t fromLen = sizeof from;
+  CHECK(::recvfrom(peer, got, sizeof got, 0, reinterpret_cast<sockaddr*>(&from), &fromLen) == 3);
+  CHECK(::recv(peer, got, sizeof got, 0) == 2);  // a second datagram, not merged
+  const uint8_t reply[] = {9, 8, 7, 6};
+  REQUIRE(::sendto(peer, reply, sizeof reply, 0, reinterpret_cast<sockaddr*>(&from), fromLen) == 4);
+  const IoResult r = udp.read(got, sizeof got, 1000);
+  CHECK(r.status == IoStatus::Ok);
+  REQUIRE(r.bytes == 4);
+  CHECK(got[3] == 6);
+  ::close(peer);
+  // Nobody listening any more: writes are lost as on a network, never an error or a block.
+  for (int i = 0; i < 3; ++i) CHECK(udp.write(a, sizeof a).status == IoStatus::Ok);
+  CHECK(udp.read(got, sizeof got, 0).status == IoStatus::Ok);
+
+  UdpSocket bad;
+  CHECK_FALSE(bad.open("127.0.0.1"));
+  CHECK(std::string(bad.error()) == "udp:127.0.0.1: expected HOST:PORT");
 }

@@ -13,6 +13,7 @@
 #include "cuetrack/platform/linux/SerialPort.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 #include "cuetrack/platform/linux/StderrReporter.hpp"
+#include "cuetrack/platform/linux/UdpSocket.hpp"
 #include "cuetrack/platform/mavlink/MavlinkLink.hpp"
 
 namespace cuetrack::app {
@@ -86,6 +87,11 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report(port.error());
     return kExitOutput;
   }
+  static platform::UdpSocket udp;
+  if (opt.mavlinkUdp && !udp.open(opt.mavlinkUdp)) {
+    reporter.report(udp.error());
+    return kExitOutput;
+  }
 
   static FrameSlot slot;  // ~1.5 MiB
   PipelineOptions po;
@@ -101,12 +107,12 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   po.groundTruthName = groundTruthName;
   Pipeline pipeline(*source, slot, tracker, clock, reporter, po);
   if (opt.outPath) pipeline.addSink(&fileSink);
-  if (opt.forceStdout || (!opt.outPath && !opt.serialPath)) {
+  if (opt.forceStdout || (!opt.outPath && !opt.serialPath && !opt.mavlinkUdp)) {
     stdoutSink.attachStdout(platform::TextFormat::Line);
     pipeline.addSink(&stdoutSink);
   }
   static platform::TrackLink* link = nullptr;
-  if (opt.serialPath && opt.protocol == Protocol::Mavlink) {
+  if (opt.protocol == Protocol::Mavlink) {
     platform::mavlink::LinkConfig mc;
     mc.sysId = static_cast<uint8_t>(opt.mavSysId);
     mc.compId = static_cast<uint8_t>(opt.mavCompId);
@@ -115,7 +121,8 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     mc.mount.yawDeg = opt.mountDeg[2];
     for (int i = 0; i < 3; ++i) mc.mount.offsetM[i] = opt.mountOffsetM[i];
     mc.landingPosition = opt.landingPosition;
-    static platform::mavlink::MavlinkLink mavlinkLink(port, clock, reporter, mc);
+    platform::ByteStream& stream = opt.mavlinkUdp ? static_cast<platform::ByteStream&>(udp) : port;
+    static platform::mavlink::MavlinkLink mavlinkLink(stream, clock, reporter, mc);
     link = &mavlinkLink;
   } else if (opt.serialPath) {
     static SerialLink serialLink(port, clock, reporter);

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "cuetrack/platform/HostPort.hpp"
+
 namespace cuetrack::app {
 namespace {
 
@@ -77,6 +79,9 @@ const char* usageText() {
          "                     looking forward; 0,-90,0: looking down, image top forward)\n"
          "  --mavlink-offset X,Y,Z\n"
          "                     camera position on the vehicle, body frame FRD [m]\n"
+         "  --mavlink-udp HOST:PORT\n"
+         "                     MAVLink over UDP to HOST:PORT (a MAVLink router on a companion\n"
+         "                     computer) instead of --serial\n"
          "  --mavlink-landing frd|angles\n"
          "                     LANDING_TARGET with x,y,z in MAV_FRAME_BODY_FRD (default, for\n"
          "                     ArduPilot) or angles and distance only (for PX4)\n"
@@ -186,6 +191,16 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
         return ParseResult::Error;
       }
       if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-udp") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      char host[256];
+      unsigned port = 0;
+      if (!platform::splitHostPort(v, host, sizeof host, &port)) {
+        std::snprintf(err, errLen, "--mavlink-udp %s: expected HOST:PORT, port 1..65535", v);
+        return ParseResult::Error;
+      }
+      out->mavlinkUdp = v;
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
     } else if (std::strcmp(a, "--mavlink-landing") == 0) {
       if (!value(&v)) return ParseResult::Error;
       if (std::strcmp(v, "frd") != 0 && std::strcmp(v, "angles") != 0) {
@@ -238,8 +253,13 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
     return ParseResult::Error;
   }
   // A setting that would do nothing is refused rather than ignored.
-  if (out->protocol == Protocol::Mavlink && out->serialPath == nullptr) {
-    std::snprintf(err, errLen, "--protocol mavlink needs --serial DEV");
+  if (out->protocol == Protocol::Mavlink && out->serialPath == nullptr &&
+      out->mavlinkUdp == nullptr) {
+    std::snprintf(err, errLen, "--protocol mavlink needs --serial DEV or --mavlink-udp HOST:PORT");
+    return ParseResult::Error;
+  }
+  if (out->serialPath != nullptr && out->mavlinkUdp != nullptr) {
+    std::snprintf(err, errLen, "--serial and --mavlink-udp: one link at a time");
     return ParseResult::Error;
   }
   if (out->mavlinkOnlyOption && out->protocol != Protocol::Mavlink) {

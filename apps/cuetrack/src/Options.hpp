@@ -39,6 +39,7 @@ struct AppOptions {
   int mavCompId = 100;                      // MAVLink component id (MAV_COMP_ID_CAMERA)
   float mountDeg[3] = {0.f, 0.f, 0.f};      // camera roll, pitch, yaw on the body [deg]
   float mountOffsetM[3] = {0.f, 0.f, 0.f};  // camera position in the body frame FRD [m]
+  const char* mavlinkUdp = nullptr;         // --mavlink-udp HOST:PORT instead of --serial
   bool landingPosition = true;              // --mavlink-landing frd (else angles)
   const char* mavlinkOnlyOption = nullptr;  // the first --mavlink-* option given
 };

@@ -1,6 +1,7 @@
 #include "cuetrack/platform/QueuedPort.hpp"
 
 #include <cstdio>
+#include <cstring>
 
 namespace cuetrack::platform {
 
@@ -55,10 +56,18 @@ bool QueuedPort::drain(int maxMs) {
 }
 
 void QueuedPort::flush() {
-  while (_connected && _txSize > 0) {
-    const size_t contiguous =
-        (_txHead + _txSize <= kTxQueueBytes) ? _txSize : kTxQueueBytes - _txHead;
-    const IoResult r = _port.write(_tx + _txHead, contiguous);
+  while (_connected && _lenCount > 0) {
+    // The rest of the oldest message, in one piece even where it wraps round the ring.
+    const size_t rest = _lens[_lenHead] - _headSentBytes;
+    uint8_t joined[kMaxMessageBytes];
+    const uint8_t* bytes = _tx + _txHead;
+    if (_txHead + rest > kTxQueueBytes) {
+      const size_t first = kTxQueueBytes - _txHead;
+      std::memcpy(joined, _tx + _txHead, first);
+      std::memcpy(joined + first, _tx, rest - first);
+      bytes = joined;
+    }
+    const IoResult r = _port.write(bytes, rest);
     if (r.status == IoStatus::Closed || r.status == IoStatus::Error) {
       lost(_port.error());
       return;
@@ -66,18 +75,16 @@ void QueuedPort::flush() {
     if (r.status == IoStatus::WouldBlock || r.bytes == 0) return;
     _txHead = (_txHead + r.bytes) % kTxQueueBytes;
     _txSize -= r.bytes;
-    // Retire the messages now wholly on the line.
     _headSentBytes += r.bytes;
-    while (_lenCount > 0 && _headSentBytes >= _lens[_lenHead]) {
-      _headSentBytes -= _lens[_lenHead];
-      _lenHead = (_lenHead + 1) % kMaxQueuedMessages;
-      --_lenCount;
-    }
+    if (_headSentBytes < _lens[_lenHead]) return;  // a short write: the line is full
+    _headSentBytes = 0;
+    _lenHead = (_lenHead + 1) % kMaxQueuedMessages;
+    --_lenCount;
   }
 }
 
 bool QueuedPort::send(const uint8_t* bytes, size_t n, bool counted) {
-  const bool fits = _connected && n > 0 && n <= UINT16_MAX && kTxQueueBytes - _txSize >= n &&
+  const bool fits = _connected && n > 0 && n <= kMaxMessageBytes && kTxQueueBytes - _txSize >= n &&
                     _lenCount < kMaxQueuedMessages;
   if (!fits) {
     if (counted) ++_stats.txDropped;

@@ -2,6 +2,7 @@
 // or stalled peer never blocks the tracker (a message that does not fit is refused
 // whole, the caller counts it), reads that never wait, and reconnecting every
 // kRetryPeriodUs when the device went away (the messages queued then are counted lost).
+// It writes one message at a time, so on a datagram stream (UDP) each is one datagram.
 #pragma once
 
 #include <cstddef>
@@ -18,6 +19,7 @@ class QueuedPort {
  public:
   static constexpr size_t kTxQueueBytes = 2048;
   static constexpr size_t kMaxQueuedMessages = 256;  // a message is at least 8 bytes
+  static constexpr size_t kMaxMessageBytes = 512;    // MAVLink's largest frame is 280
   static constexpr uint64_t kRetryPeriodUs = 500000;
 
   QueuedPort(ByteStream& port, const Clock& clock, Reporter& reporter);
