@@ -9,7 +9,10 @@ constexpr int kDepthWindowHalfPx = 2;  // the depth at a point: mean of the vali
 
 // Mean valid depth [mm] in a small window around (x, y); 0 when none.
 float depthNearMm(const DepthView& d, float xPx, float yPx) {
-  if (d.empty() || !std::isfinite(xPx) || !std::isfinite(yPx)) return 0.f;
+  // Outside the image (or not a number): no depth there, and no int overflow below.
+  if (d.empty() || !(xPx >= 0.f) || !(yPx >= 0.f) || xPx >= static_cast<float>(d.width) ||
+      yPx >= static_cast<float>(d.height))
+    return 0.f;
   const int cx = static_cast<int>(xPx), cy = static_cast<int>(yPx);
   double sum = 0;
   int n = 0;
