@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "LoopbackUdp.hpp"
 #include "Process.hpp"
 #include "Skip.hpp"
 #include "TempDir.hpp"
@@ -325,16 +326,9 @@ TEST_CASE("a MAVLink peer that stops reading does not block the tracker; drops a
 }
 TEST_CASE("--mavlink-udp: the same messages to a loopback peer, commands answered to it") {
   // The ground station's end: a UDP socket on loopback, decoding with the official library.
-  const int gcs = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-  REQUIRE(gcs >= 0);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  REQUIRE(::bind(gcs, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
-  socklen_t len = sizeof addr;
-  REQUIRE(::getsockname(gcs, reinterpret_cast<sockaddr*>(&addr), &len) == 0);
-  char target[32];
-  std::snprintf(target, sizeof target, "127.0.0.1:%u", static_cast<unsigned>(ntohs(addr.sin_port)));
+  LoopbackUdp gcsSocket;
+  const int gcs = gcsSocket.fd;
+  const char* target = gcsSocket.target;
   TempDir tmp;
   const std::string appErr = tmp / "app.err";
   ChildProcess app;
@@ -392,6 +386,5 @@ TEST_CASE("--mavlink-udp: the same messages to a loopback peer, commands answere
   int exitStatus = -1;
   REQUIRE(app.wait(30000, &exitStatus));
   CHECK(exitStatus == 0);
-  ::close(gcs);
 }
 #endif

@@ -15,12 +15,14 @@
 #include <cstdio>
 #include <string>
 
+#include "LoopbackUdp.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 #include "cuetrack/platform/linux/UdpSocket.hpp"
 
 using namespace cuetrack::platform;
+using cuetrack::test::LoopbackUdp;
 
 TEST_CASE("a full disk is one line naming the file, not a crash") {
   FdTrackSink lines;
@@ -125,16 +127,9 @@ TEST_CASE("a file-size limit (ulimit -f) is a write error, not a silent death") 
 }
 
 TEST_CASE("UdpSocket: one datagram per write to a loopback peer, replies read back") {
-  const int peer = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-  REQUIRE(peer >= 0);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  REQUIRE(::bind(peer, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
-  socklen_t len = sizeof addr;
-  REQUIRE(::getsockname(peer, reinterpret_cast<sockaddr*>(&addr), &len) == 0);
-  char target[32];
-  std::snprintf(target, sizeof target, "127.0.0.1:%u", static_cast<unsigned>(ntohs(addr.sin_port)));
+  LoopbackUdp peerSocket;
+  const int peer = peerSocket.fd;
+  const char* target = peerSocket.target;
   UdpSocket udp;
   REQUIRE(udp.open(target));
   CHECK(std::string(udp.name()) == std::string("udp:") + target);
@@ -152,7 +147,7 @@ TEST_CASE("UdpSocket: one datagram per write to a loopback peer, replies read ba
   CHECK(r.status == IoStatus::Ok);
   REQUIRE(r.bytes == 4);
   CHECK(got[3] == 6);
-  ::close(peer);
+  peerSocket.close();
   // Nobody listening any more: writes are lost as on a network, never an error or a block.
   for (int i = 0; i < 3; ++i) CHECK(udp.write(a, sizeof a).status == IoStatus::Ok);
   CHECK(udp.read(got, sizeof got, 0).status == IoStatus::Ok);
