@@ -158,9 +158,6 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
                  "0.1,0,-0.05", "--mavlink-landing", "angles"},
                 &o, &err) == ParseResult::Run);
   CHECK_FALSE(o.landingPosition);
-  REQUIRE(parse({"--protocol", "mavlink", "--mavlink-udp", "127.0.0.1:14550"}, &o, &err) ==
-          ParseResult::Run);
-  CHECK(std::string(o.mavlinkUdp) == "127.0.0.1:14550");
   CHECK(o.protocol == Protocol::Mavlink);
   CHECK(o.mavSysId == 7);
   CHECK(o.mavCompId == 101);
@@ -168,6 +165,9 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
   CHECK(o.mountDeg[2] == 12.5f);
   CHECK(o.mountOffsetM[0] == Approx(0.1f));
   CHECK(o.mountOffsetM[2] == Approx(-0.05f));
+  REQUIRE(parse({"--protocol", "mavlink", "--mavlink-udp", "127.0.0.1:14550"}, &o, &err) ==
+          ParseResult::Run);
+  CHECK(std::string(o.mavlinkUdp) == "127.0.0.1:14550");
   const struct {
     std::initializer_list<const char*> args;
     const char* says;

@@ -405,8 +405,8 @@ TEST_CASE("MavlinkLink: track commands are acknowledged once, after the tracker'
   rig.send(commandFrame(kCmdCameraTrackRectangle, {0.5f, 0.5f, 0.4f, 0.9f}));
   rig.send(commandFrame(kCmdCameraTrackPoint, {NAN, 0.5f, 0.f}));
   rig.send(commandFrame(kCmdCameraTrackRectangle, {0.1f, 0.1f, 0.2f, 0.2f, 42.f}));  // camera 42
-  rig.send(commandFrame(kCmdCameraStopTracking, {0}));
-  rig.send(commandFrame(400, {1}));  // ARM_DISARM
+  rig.send(commandFrame(kCmdCameraStopTracking, {NAN}));  // NaN: camera id not given
+  rig.send(commandFrame(400, {1}));                       // ARM_DISARM
   rig.poll();
   acks = rig.acks(rig.read());
   REQUIRE(acks.size() == 5);

@@ -17,6 +17,12 @@ bool inUnit(float v) {
   return std::isfinite(v) && v >= 0.f && v <= 1.f;
 }
 
+// A command's "target camera id": 0 (all cameras), NaN (not given, as some senders mark
+// an unused parameter) or our component id.
+bool cameraIsUs(float id, uint8_t compId) {
+  return std::isnan(id) || id == 0.f || id == static_cast<float>(compId);
+}
+
 }  // namespace
 
 bool MavlinkLink::Interval::due(uint64_t nowUs) {
@@ -69,20 +75,21 @@ void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
   }
 }
 
+// Commands for another system or component are not ours to answer.
+bool MavlinkLink::forUs(uint8_t targetSystem, uint8_t targetComponent) const {
+  return (targetSystem == 0 || targetSystem == _config.sysId) &&
+         (targetComponent == 0 || targetComponent == _config.compId);
+}
+
 void MavlinkLink::handle(const Message& m, LinkControl& control) {
   if (m.header.msgId == kMsgCommandLong) {
     const CommandLong c = unpackCommandLong(m.payload);
-    // Commands for another system or component are not ours to answer.
-    if ((c.targetSystem != 0 && c.targetSystem != _config.sysId) ||
-        (c.targetComponent != 0 && c.targetComponent != _config.compId))
-      return;
-    handleCommand(c, m.header.sysId, m.header.compId, control);
+    if (forUs(c.targetSystem, c.targetComponent))
+      handleCommand(c, m.header.sysId, m.header.compId, control);
   } else if (m.header.msgId == kMsgCommandInt) {
     const CommandInt c = unpackCommandInt(m.payload);
-    if ((c.targetSystem != 0 && c.targetSystem != _config.sysId) ||
-        (c.targetComponent != 0 && c.targetComponent != _config.compId))
-      return;
-    sendAck(c.command, kResultCommandLongOnly, m.header.sysId, m.header.compId);
+    if (forUs(c.targetSystem, c.targetComponent))
+      sendAck(c.command, kResultCommandLongOnly, m.header.sysId, m.header.compId);
   }
 }
 
@@ -95,9 +102,8 @@ void MavlinkLink::handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t f
       result = startTracking(c, fromSys, fromComp, control);
       if (result == kDeferred) return;  // answered once the tracker has tried it
       break;
-    case kCmdCameraStopTracking: {
-      const float camera = c.param[0];
-      if (camera != 0.f && camera != static_cast<float>(_config.compId)) {
+    case kCmdCameraStopTracking:
+      if (!cameraIsUs(c.param[0], _config.compId)) {
         result = kResultDenied;
         break;
       }
@@ -105,7 +111,6 @@ void MavlinkLink::handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t f
       _trackingMode = kTrackingModeNone;
       result = kResultAccepted;
       break;
-    }
     case kCmdSetMessageInterval:
       result = setInterval(c);
       break;
@@ -136,13 +141,14 @@ uint8_t MavlinkLink::startTracking(const CommandLong& c, uint8_t fromSys, uint8_
     r.box = Box{x0, y0, x1 - x0, y1 - y0};
   } else {
     camera = c.param[3];
-    if (!inUnit(c.param[0]) || !inUnit(c.param[1]) || !inUnit(c.param[2])) return kResultDenied;
+    const float radius = std::isnan(c.param[2]) ? 0.f : c.param[2];  // NaN: not given
+    if (!inUnit(c.param[0]) || !inUnit(c.param[1]) || !inUnit(radius)) return kResultDenied;
     r.kind = StartRequest::Kind::PointNormalised;
     r.pointX = c.param[0];
     r.pointY = c.param[1];
-    r.radius = c.param[2];
+    r.radius = radius;
   }
-  if (camera != 0.f && camera != static_cast<float>(_config.compId)) return kResultDenied;
+  if (!cameraIsUs(camera, _config.compId)) return kResultDenied;
   // A free slot: the pipeline answers the older pending start (Superseded) before it
   // keeps this one, so at most two are ever waiting.
   PendingStart* slot = nullptr;

@@ -67,6 +67,7 @@ class MavlinkLink final : public TrackLink {
   };
   static constexpr int kPendingSlots = 2;  // the old one is answered as the new one arrives
 
+  bool forUs(uint8_t targetSystem, uint8_t targetComponent) const;
   void handle(const Message& m, LinkControl& control);
   void handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t fromComp, LinkControl& control);
   uint8_t startTracking(const CommandLong& c, uint8_t fromSys, uint8_t fromComp,
