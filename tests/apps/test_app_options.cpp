@@ -145,3 +145,58 @@ TEST_CASE("--seed takes plain digits only; --baud says unsupported for a number 
   CHECK(parse({"--baud", "fast"}, &o, &err) == ParseResult::Error);
   CHECK(err.find("--baud fast: not a number") == 0);
 }
+
+TEST_CASE("--protocol mavlink and its settings; each refused alone or out of range, named") {
+  AppOptions o;
+  std::string err;
+  REQUIRE(parse({"--serial", "/dev/ttyS0"}, &o, &err) == ParseResult::Run);
+  CHECK(o.protocol == Protocol::Cuetrack);
+  CHECK(o.mavSysId == 1);
+  CHECK(o.mavCompId == 100);
+  REQUIRE(parse({"--serial", "/dev/ttyS0", "--protocol", "mavlink", "--mavlink-sysid", "7",
+                 "--mavlink-compid", "101", "--mavlink-mount", "0,-90,12.5", "--mavlink-offset",
+                 "0.1,0,-0.05", "--mavlink-landing", "angles"},
+                &o, &err) == ParseResult::Run);
+  CHECK_FALSE(o.landingPosition);
+  CHECK(o.protocol == Protocol::Mavlink);
+  CHECK(o.mavSysId == 7);
+  CHECK(o.mavCompId == 101);
+  CHECK(o.mountDeg[1] == -90.f);
+  CHECK(o.mountDeg[2] == 12.5f);
+  CHECK(o.mountOffsetM[0] == Approx(0.1f));
+  CHECK(o.mountOffsetM[2] == Approx(-0.05f));
+  REQUIRE(parse({"--protocol", "mavlink", "--mavlink-udp", "127.0.0.1:14550"}, &o, &err) ==
+          ParseResult::Run);
+  CHECK(std::string(o.mavlinkUdp) == "127.0.0.1:14550");
+  const struct {
+    std::initializer_list<const char*> args;
+    const char* says;
+  } bad[] = {
+      {{"--protocol", "mavlink"}, "--protocol mavlink needs --serial DEV or --mavlink-udp"},
+      {{"--protocol", "mavlink", "--mavlink-udp", "localhost"},
+       "--mavlink-udp localhost: expected"},
+      {{"--protocol", "mavlink", "--mavlink-udp", "h:70000"}, "--mavlink-udp h:70000: expected"},
+      {{"--protocol", "mavlink", "--mavlink-udp", "h:1", "--serial", "x"},
+       "--serial and --mavlink-udp: one link at a time"},
+      {{"--mavlink-udp", "h:1"}, "--mavlink-udp needs --protocol mavlink"},
+      {{"--serial", "x", "--protocol", "mavlink2"}, "--protocol mavlink2: expected"},
+      {{"--serial", "x", "--mavlink-sysid", "3"}, "--mavlink-sysid needs --protocol mavlink"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-compid", "0"}, "--mavlink-compid 0:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-sysid", "256"},
+       "--mavlink-sysid 256:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-mount", "0,90"},
+       "--mavlink-mount 0,90: expected ROLL,PITCH,YAW"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-mount", "0,nan,0"},
+       "--mavlink-mount 0,nan,0:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-offset", "1,2,3x"},
+       "--mavlink-offset 1,2,3x:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-landing", "ned"},
+       "--mavlink-landing ned: expected frd or angles"},
+      {{"--serial", "x", "--mavlink-landing", "angles"}, "--mavlink-landing needs --protocol"},
+  };
+  for (const auto& b : bad) {
+    INFO(b.says);
+    CHECK(parse(b.args, &o, &err) == ParseResult::Error);
+    CHECK(err.find(b.says) == 0);
+  }
+}

@@ -409,7 +409,7 @@ TEST_CASE("garbage, corrupt and malformed inbound frames are answered with ERROR
   CHECK(codes[2] == CTP_E_VALUE);
   CHECK(codes[3] == CTP_E_TYPE);
   CHECK(rig.link.stats().rxErrors == 4);
-  CHECK(rig.pipeline.commands().accepted() == 1);
+  CHECK(rig.link.commands().accepted() == 1);
 }
 
 TEST_CASE("SET_RATE thins the serial stream but not the other outputs; 0 restores every frame") {

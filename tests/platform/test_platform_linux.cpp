@@ -2,9 +2,12 @@
 // errors, the monotonic clock, the stop signals, the reporters.
 #include <catch2/catch.hpp>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,11 +15,14 @@
 #include <cstdio>
 #include <string>
 
+#include "LoopbackUdp.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
+#include "cuetrack/platform/linux/UdpSocket.hpp"
 
 using namespace cuetrack::platform;
+using cuetrack::test::LoopbackUdp;
 
 TEST_CASE("a full disk is one line naming the file, not a crash") {
   FdTrackSink lines;
@@ -118,4 +124,35 @@ TEST_CASE("a file-size limit (ulimit -f) is a write error, not a silent death") 
   const int killed = writeOverLimit(false);  // control: the default disposition kills
   CHECK(WIFSIGNALED(killed));
   CHECK(WTERMSIG(killed) == SIGXFSZ);
+}
+
+TEST_CASE("UdpSocket: one datagram per write to a loopback peer, replies read back") {
+  LoopbackUdp peerSocket;
+  const int peer = peerSocket.fd;
+  const char* target = peerSocket.target;
+  UdpSocket udp;
+  REQUIRE(udp.open(target));
+  CHECK(std::string(udp.name()) == std::string("udp:") + target);
+  const uint8_t a[] = {1, 2, 3}, b[] = {4, 5};
+  REQUIRE(udp.write(a, sizeof a).bytes == 3);
+  REQUIRE(udp.write(b, sizeof b).bytes == 2);
+  uint8_t got[16];
+  sockaddr_in from{};
+  socklen_t fromLen = sizeof from;
+  CHECK(::recvfrom(peer, got, sizeof got, 0, reinterpret_cast<sockaddr*>(&from), &fromLen) == 3);
+  CHECK(::recv(peer, got, sizeof got, 0) == 2);  // a second datagram, not merged
+  const uint8_t reply[] = {9, 8, 7, 6};
+  REQUIRE(::sendto(peer, reply, sizeof reply, 0, reinterpret_cast<sockaddr*>(&from), fromLen) == 4);
+  const IoResult r = udp.read(got, sizeof got, 1000);
+  CHECK(r.status == IoStatus::Ok);
+  REQUIRE(r.bytes == 4);
+  CHECK(got[3] == 6);
+  peerSocket.close();
+  // Nobody listening any more: writes are lost as on a network, never an error or a block.
+  for (int i = 0; i < 3; ++i) CHECK(udp.write(a, sizeof a).status == IoStatus::Ok);
+  CHECK(udp.read(got, sizeof got, 0).status == IoStatus::Ok);
+
+  UdpSocket bad;
+  CHECK_FALSE(bad.open("127.0.0.1"));
+  CHECK(std::string(bad.error()) == "udp:127.0.0.1: expected HOST:PORT");
 }

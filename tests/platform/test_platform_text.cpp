@@ -3,8 +3,10 @@
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <string>
 
 #include "cuetrack/platform/CommandText.hpp"
+#include "cuetrack/platform/HostPort.hpp"
 #include "cuetrack/platform/TrackText.hpp"
 
 using namespace cuetrack;
@@ -118,4 +120,23 @@ TEST_CASE("command text parses the four commands and refuses anything else") {
   s.box_px[3] = 4;
   REQUIRE(formatCommandText(s, text, sizeof text) > 0);
   CHECK(std::string(text) == "start:-1,2,3,4");
+}
+
+TEST_CASE("HOST:PORT: names, IPv4 and [IPv6] with a port 1..65535; anything else refused") {
+  char host[64];
+  unsigned port = 0;
+  REQUIRE(platform::splitHostPort("127.0.0.1:14550", host, sizeof host, &port));
+  CHECK(std::string(host) == "127.0.0.1");
+  CHECK(port == 14550);
+  REQUIRE(platform::splitHostPort("router.local:1", host, sizeof host, &port));
+  CHECK(std::string(host) == "router.local");
+  REQUIRE(platform::splitHostPort("[::1]:65535", host, sizeof host, &port));
+  CHECK(std::string(host) == "::1");
+  CHECK(port == 65535);
+  for (const char* bad : {"127.0.0.1", "127.0.0.1:", ":14550", "h:0", "h:65536", "h:-1", "h:12x",
+                          "::1:14550", "[::1]14550", "[::1:5"}) {
+    INFO(bad);
+    CHECK_FALSE(platform::splitHostPort(bad, host, sizeof host, &port));
+  }
+  CHECK_FALSE(platform::splitHostPort("averyveryverylonghostname:1", host, 8, &port));
 }

@@ -13,6 +13,8 @@
 #include "cuetrack/platform/linux/SerialPort.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 #include "cuetrack/platform/linux/StderrReporter.hpp"
+#include "cuetrack/platform/linux/UdpSocket.hpp"
+#include "cuetrack/platform/mavlink/MavlinkLink.hpp"
 
 namespace cuetrack::app {
 
@@ -85,6 +87,11 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report(port.error());
     return kExitOutput;
   }
+  static platform::UdpSocket udp;
+  if (opt.mavlinkUdp && !udp.open(opt.mavlinkUdp)) {
+    reporter.report(udp.error());
+    return kExitOutput;
+  }
 
   static FrameSlot slot;  // ~1.5 MiB
   PipelineOptions po;
@@ -100,16 +107,28 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   po.groundTruthName = groundTruthName;
   Pipeline pipeline(*source, slot, tracker, clock, reporter, po);
   if (opt.outPath) pipeline.addSink(&fileSink);
-  if (opt.forceStdout || (!opt.outPath && !opt.serialPath)) {
+  if (opt.forceStdout || (!opt.outPath && !opt.serialPath && !opt.mavlinkUdp)) {
     stdoutSink.attachStdout(platform::TextFormat::Line);
     pipeline.addSink(&stdoutSink);
   }
-  static SerialLink* link = nullptr;
-  if (opt.serialPath) {
+  static platform::TrackLink* link = nullptr;
+  if (opt.protocol == Protocol::Mavlink) {
+    platform::mavlink::LinkConfig mc;
+    mc.sysId = static_cast<uint8_t>(opt.mavSysId);
+    mc.compId = static_cast<uint8_t>(opt.mavCompId);
+    mc.mount.rollDeg = opt.mountDeg[0];
+    mc.mount.pitchDeg = opt.mountDeg[1];
+    mc.mount.yawDeg = opt.mountDeg[2];
+    for (int i = 0; i < 3; ++i) mc.mount.offsetM[i] = opt.mountOffsetM[i];
+    mc.landingPosition = opt.landingPosition;
+    platform::ByteStream& stream = opt.mavlinkUdp ? static_cast<platform::ByteStream&>(udp) : port;
+    static platform::mavlink::MavlinkLink mavlinkLink(stream, clock, reporter, mc);
+    link = &mavlinkLink;
+  } else if (opt.serialPath) {
     static SerialLink serialLink(port, clock, reporter);
     link = &serialLink;
-    pipeline.attachLink(link);
   }
+  if (link) pipeline.attachLink(link);
 
   StepResult r = StepResult::Continue;
   while (r == StepResult::Continue && !platform::stopRequested()) r = pipeline.step();
@@ -118,13 +137,20 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   if (link && !link->drain(1000))
     reporter.report("serial: could not send the last messages within 1 s");
   if (!opt.quiet) {
-    std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
-                  static_cast<unsigned>(pipeline.frames()),
-                  platform::stopRequested()      ? "signal"
-                  : r == StepResult::Stopped     ? "STOP command"
-                  : r == StepResult::Done        ? "end of source or --frames"
-                  : r == StepResult::OutputsGone ? "every output failed"
-                                                 : "error");
+    int n = std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
+                          static_cast<unsigned>(pipeline.frames()),
+                          platform::stopRequested()      ? "signal"
+                          : r == StepResult::Stopped     ? "STOP command"
+                          : r == StepResult::Done        ? "end of source or --frames"
+                          : r == StepResult::OutputsGone ? "every output failed"
+                                                         : "error");
+    // What the link managed: a peer that stopped reading shows as tx-dropped.
+    if (link && n > 0 && static_cast<size_t>(n) < sizeof err) {
+      const platform::LinkStats& s = link->stats();
+      std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
+                    "; serial sent %u tx-dropped %u rx-errors %u", static_cast<unsigned>(s.sent),
+                    static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors));
+    }
     reporter.report(err);
   }
   switch (r) {

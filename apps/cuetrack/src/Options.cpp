@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "cuetrack/platform/HostPort.hpp"
+
 namespace cuetrack::app {
 namespace {
 
@@ -21,20 +23,25 @@ bool parseLong(const char* s, long lo, long hi, long* out) {
   return true;
 }
 
-bool parseBox(const char* s, Box* out) {
-  float v[4];
-  for (int i = 0; i < 4; ++i) {
+// n finite numbers "A,B,...", each within +-limit.
+bool parseFloats(const char* s, int n, float limit, float* out) {
+  for (int i = 0; i < n; ++i) {
     char* end = nullptr;
-    v[i] = std::strtof(s, &end);
-    // inf, nan and absurd sizes would reach the tracker as a box it "tracks".
-    if (end == s || !std::isfinite(v[i]) || std::fabs(v[i]) > kMaxBoxPx) return false;
+    out[i] = std::strtof(s, &end);
+    // inf, nan and absurd values would reach the tracker as something it "tracks".
+    if (end == s || !std::isfinite(out[i]) || std::fabs(out[i]) > limit) return false;
     s = end;
-    if (i < 3) {
+    if (i < n - 1) {
       if (*s != ',') return false;
       ++s;
     }
   }
-  if (*s != '\0' || !(v[2] > 0.f) || !(v[3] > 0.f)) return false;
+  return *s == '\0';
+}
+
+bool parseBox(const char* s, Box* out) {
+  float v[4];
+  if (!parseFloats(s, 4, kMaxBoxPx, v) || !(v[2] > 0.f) || !(v[3] > 0.f)) return false;
   *out = Box{v[0], v[1], v[2], v[3]};
   return true;
 }
@@ -43,7 +50,8 @@ bool parseBox(const char* s, Box* out) {
 
 const char* usageText() {
   return "usage: cuetrack [options]\n"
-         "Tracks an object in RGB-D frames and streams the track (docs/serial-protocol.md).\n"
+         "Tracks an object in RGB-D frames and streams the track (docs/serial-protocol.md,\n"
+         "docs/mavlink.md).\n"
          "\n"
          "source (default: the Kinect when one is plugged in, else the synthetic scene 'moving'):\n"
          "  --source kinect[:colour]|synth[:SCENE]|PATH\n"
@@ -62,6 +70,21 @@ const char* usageText() {
          "  --serial DEV       stream binary track messages, accept commands (8N1 raw)\n"
          "  --baud N           9600 19200 38400 57600 115200 (default) 230400 460800 500000\n"
          "                     576000 921600\n"
+         "  --protocol P       on --serial: cuetrack (default, docs/serial-protocol.md) or\n"
+         "                     mavlink (MAVLink 2 camera component, docs/mavlink.md)\n"
+         "  --mavlink-sysid N  our MAVLink system id, 1..255 (default 1, the vehicle's)\n"
+         "  --mavlink-compid N our MAVLink component id, 1..255 (default 100, CAMERA)\n"
+         "  --mavlink-mount R,P,Y\n"
+         "                     camera roll, pitch, yaw on the vehicle [deg] (default 0,0,0:\n"
+         "                     looking forward; 0,-90,0: looking down, image top forward)\n"
+         "  --mavlink-offset X,Y,Z\n"
+         "                     camera position on the vehicle, body frame FRD [m]\n"
+         "  --mavlink-udp HOST:PORT\n"
+         "                     MAVLink over UDP to HOST:PORT (a MAVLink router on a companion\n"
+         "                     computer) instead of --serial\n"
+         "  --mavlink-landing frd|angles\n"
+         "                     LANDING_TARGET with x,y,z in MAV_FRAME_BODY_FRD (default, for\n"
+         "                     ArduPilot) or angles and distance only (for PX4)\n"
          "  --out FILE         CSV, one row per frame ('-' = stdout)\n"
          "  --stdout           one line per frame on stdout as well\n"
          "run:\n"
@@ -141,6 +164,58 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
         return ParseResult::Error;
       }
       out->baud = static_cast<int>(n);
+    } else if (std::strcmp(a, "--protocol") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (std::strcmp(v, "cuetrack") == 0) {
+        out->protocol = Protocol::Cuetrack;
+      } else if (std::strcmp(v, "mavlink") == 0) {
+        out->protocol = Protocol::Mavlink;
+      } else {
+        std::snprintf(err, errLen, "--protocol %s: expected cuetrack or mavlink", v);
+        return ParseResult::Error;
+      }
+    } else if (std::strcmp(a, "--mavlink-sysid") == 0 || std::strcmp(a, "--mavlink-compid") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseLong(v, 1, 255, &n)) {
+        std::snprintf(err, errLen, "%s %s: expected an id 1..255", a, v);
+        return ParseResult::Error;
+      }
+      (std::strcmp(a, "--mavlink-sysid") == 0 ? out->mavSysId : out->mavCompId) =
+          static_cast<int>(n);
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-mount") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseFloats(v, 3, 360.f, out->mountDeg)) {
+        std::snprintf(err, errLen,
+                      "--mavlink-mount %s: expected ROLL,PITCH,YAW [deg], each within +-360", v);
+        return ParseResult::Error;
+      }
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-udp") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      char host[256];
+      unsigned port = 0;
+      if (!platform::splitHostPort(v, host, sizeof host, &port)) {
+        std::snprintf(err, errLen, "--mavlink-udp %s: expected HOST:PORT, port 1..65535", v);
+        return ParseResult::Error;
+      }
+      out->mavlinkUdp = v;
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-landing") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (std::strcmp(v, "frd") != 0 && std::strcmp(v, "angles") != 0) {
+        std::snprintf(err, errLen, "--mavlink-landing %s: expected frd or angles", v);
+        return ParseResult::Error;
+      }
+      out->landingPosition = std::strcmp(v, "frd") == 0;
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-offset") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseFloats(v, 3, 100.f, out->mountOffsetM)) {
+        std::snprintf(err, errLen, "--mavlink-offset %s: expected X,Y,Z [m], each within +-100", v);
+        return ParseResult::Error;
+      }
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
     } else if (std::strcmp(a, "--out") == 0) {
       if (!value(&v)) return ParseResult::Error;
       out->outPath = v;
@@ -175,6 +250,20 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       (out->source == nullptr ||
        (std::strcmp(out->source, "kinect") != 0 && std::strncmp(out->source, "kinect:", 7) != 0))) {
     std::snprintf(err, errLen, "--wait-camera needs --source kinect or kinect:colour");
+    return ParseResult::Error;
+  }
+  // A setting that would do nothing is refused rather than ignored.
+  if (out->protocol == Protocol::Mavlink && out->serialPath == nullptr &&
+      out->mavlinkUdp == nullptr) {
+    std::snprintf(err, errLen, "--protocol mavlink needs --serial DEV or --mavlink-udp HOST:PORT");
+    return ParseResult::Error;
+  }
+  if (out->serialPath != nullptr && out->mavlinkUdp != nullptr) {
+    std::snprintf(err, errLen, "--serial and --mavlink-udp: one link at a time");
+    return ParseResult::Error;
+  }
+  if (out->mavlinkOnlyOption && out->protocol != Protocol::Mavlink) {
+    std::snprintf(err, errLen, "%s needs --protocol mavlink", out->mavlinkOnlyOption);
     return ParseResult::Error;
   }
   return ParseResult::Run;

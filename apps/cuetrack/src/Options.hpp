@@ -17,6 +17,8 @@ enum ExitCode : int {
   kExitBoxRejected = 4,  // --box or ground-truth box refused by the tracker (outside...)
 };
 
+enum class Protocol : uint8_t { Cuetrack, Mavlink };
+
 struct AppOptions {
   const char* source = nullptr;  // nullptr: Kinect when present, else the synthetic default
   bool hasBox = false;
@@ -32,6 +34,14 @@ struct AppOptions {
   bool quiet = false;
   bool realtime = false;    // play recordings and scenes at their own frame rate
   bool waitCamera = false;  // --source kinect: wait for one to be plugged in (WaitingSource)
+  Protocol protocol = Protocol::Cuetrack;   // on --serial
+  int mavSysId = 1;                         // MAVLink system id (the vehicle's)
+  int mavCompId = 100;                      // MAVLink component id (MAV_COMP_ID_CAMERA)
+  float mountDeg[3] = {0.f, 0.f, 0.f};      // camera roll, pitch, yaw on the body [deg]
+  float mountOffsetM[3] = {0.f, 0.f, 0.f};  // camera position in the body frame FRD [m]
+  const char* mavlinkUdp = nullptr;         // --mavlink-udp HOST:PORT instead of --serial
+  bool landingPosition = true;              // --mavlink-landing frd (else angles)
+  const char* mavlinkOnlyOption = nullptr;  // the first --mavlink-* option given
 };
 
 enum class ParseResult : uint8_t { Run, Help, Error };

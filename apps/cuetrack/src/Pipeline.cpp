@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "StartBox.hpp"
 #include "cuetrack/core/FastMath.hpp"
 #include "cuetrack/platform/TrackText.hpp"
 
@@ -43,18 +44,17 @@ bool Pipeline::addSink(platform::TrackSink* sink) {
   return true;
 }
 
-// A START waits for the next frame. One that a newer START, a RESET or a STOP supersedes
-// before then is answered ERROR busy: every command gets exactly one reply.
+// A start waits for the next frame. One that a newer start, a reset or a stop supersedes
+// before then is answered Superseded: every command gets exactly one reply.
 void Pipeline::dropPendingStart() {
-  if (_startPending && _link) _link->sendError(CTP_CMD_START, _startId, CTP_E_BUSY);
+  if (_startPending && _link) _link->answerStart(_start.token, platform::StartOutcome::Superseded);
   _startPending = false;
 }
 
-void Pipeline::requestStart(const Box& boxPx, uint16_t cmdId) {
+void Pipeline::requestStart(const platform::StartRequest& request) {
   dropPendingStart();
   _startPending = true;
-  _startBox = boxPx;
-  _startId = cmdId;
+  _start = request;
 }
 
 void Pipeline::requestStop() {
@@ -70,48 +70,33 @@ void Pipeline::requestReset() {
   _state = CTP_STATE_IDLE;
 }
 
-void Pipeline::setRateHz(uint16_t hz) {
-  if (_link) _link->setRateHz(hz);
-}
-
 void Pipeline::serviceLink() {
   if (!_link) return;
-  _link->service();
-  InboundEvent events[8];
-  for (;;) {
-    const size_t n = _link->receive(events, 8);
-    for (size_t i = 0; i < n; ++i) {
-      const Reply r = _commands.handle(events[i].error, events[i].frame, *this);
-      if (r.kind == Reply::Kind::Ack) _link->sendAck(r.cmdType, r.cmdId);
-      if (r.kind == Reply::Kind::Error) {
-        // The decoder already counted framing/CRC/version errors; count malformed commands here.
-        if (events[i].error == CTP_OK) _link->noteRejected();
-        _link->sendError(r.cmdType, r.cmdId, r.code);
-      }
-    }
-    if (n < 8) break;
-  }
-  if (_link->heartbeatDue())
-    _link->sendHeartbeat(_state, _frames, _source.awaitingDevice() ? CTP_HB_NO_CAMERA : 0u);
+  platform::LinkStatus status;
+  status.state = _state;
+  status.frames = _frames;
+  status.noCamera = _source.awaitingDevice();
+  _link->poll(*this, status);
 }
 
 bool Pipeline::startFromCommand(const Frame& frame, Box* initBox) {
   _startPending = false;
   _autoTargetTried = true;
   const char* why = "";
-  if (_tracker.init(frame, _startBox, &why) == 0) {
-    *initBox = _startBox;
-    if (_link) _link->sendAck(CTP_CMD_START, _startId);
+  const Box box = startBoxPx(_start, frame);
+  if (_tracker.init(frame, box, &why) == 0) {
+    *initBox = box;
+    if (_link) _link->answerStart(_start.token, platform::StartOutcome::Started);
     return true;
   }
   char line[160];
-  std::snprintf(line, sizeof line, "serial START %g,%g,%g,%g refused: %s", _startBox.x, _startBox.y,
-                _startBox.w, _startBox.h, why);
+  std::snprintf(line, sizeof line, "serial START %g,%g,%g,%g refused: %s", box.x, box.y, box.w,
+                box.h, why);
   _reporter.report(line);
   _tracker.reset();
   _targetActive = false;
   _state = CTP_STATE_IDLE;
-  if (_link) _link->sendError(CTP_CMD_START, _startId, CTP_E_REJECTED);
+  if (_link) _link->answerStart(_start.token, platform::StartOutcome::Refused);
   return false;
 }
 
@@ -209,7 +194,7 @@ StepResult Pipeline::step() {
       _state);
   _state = msg.state;
   ++_frames;
-  emit(msg);
+  emit(msg, frame);
   statusLine();
   if (!_link && _numSinks > 0) {
     bool anyOk = false;
@@ -219,7 +204,7 @@ StepResult Pipeline::step() {
   return StepResult::Continue;
 }
 
-void Pipeline::emit(const ctp_track_t& msg) {
+void Pipeline::emit(const ctp_track_t& msg, const Frame& frame) {
   for (int i = 0; i < _numSinks; ++i) {
     if (!_sinkOk[i]) continue;
     ctp_track_t m = msg;
@@ -233,7 +218,14 @@ void Pipeline::emit(const ctp_track_t& msg) {
       _outputFailed = true;
     }
   }
-  if (_link) _link->sendTrack(msg);
+  if (_link) {
+    platform::FrameReport report;
+    report.track = msg;
+    report.widthPx = frame.rgb.width;
+    report.heightPx = frame.rgb.height;
+    report.intrinsics = frame.intrinsics;
+    _link->sendFrame(report);
+  }
 }
 
 void Pipeline::statusLine() {
@@ -250,7 +242,7 @@ void Pipeline::statusLine() {
                         static_cast<unsigned>(_frames), fps,
                         static_cast<unsigned long long>(dropped), ctp_state_name(_state));
   if (_link && n > 0 && static_cast<size_t>(n) < sizeof line) {
-    const LinkStats& s = _link->stats();
+    const platform::LinkStats& s = _link->stats();
     std::snprintf(line + n, sizeof line - static_cast<size_t>(n),
                   " | serial %s sent %u tx-dropped %u rx-errors %u",
                   _link->connected() ? "up" : "down", static_cast<unsigned>(s.sent),

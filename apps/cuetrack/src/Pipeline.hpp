@@ -1,15 +1,14 @@
-// One frame at a time: source -> tracker -> sinks and serial link, with commands
-// from the link applied between frames. Owns no big buffer: the frame slot, the
-// tracker and the sources live in static storage in main().
+// One frame at a time: source -> tracker -> sinks and the serial link (either protocol,
+// behind platform::TrackLink), with commands from the link applied between frames. Owns no big
+// buffer: the frame slot, the tracker and the sources live in static storage in main().
 #pragma once
 
 #include <cstdint>
 
-#include "CommandHandler.hpp"
-#include "SerialLink.hpp"
 #include "TrackerPort.hpp"
 #include "cuetrack/drivers/FrameSource.hpp"
 #include "cuetrack/platform/Reporter.hpp"
+#include "cuetrack/platform/TrackLink.hpp"
 #include "cuetrack/platform/TrackSink.hpp"
 
 namespace cuetrack::app {
@@ -37,7 +36,7 @@ enum class StepResult : uint8_t {
   OutputsGone,  // every output failed and there is no serial link: nothing left to feed
 };
 
-class Pipeline final : public AppControl {
+class Pipeline final : public platform::LinkControl {
  public:
   static constexpr int kMaxSinks = 3;
 
@@ -49,7 +48,7 @@ class Pipeline final : public AppControl {
   Pipeline& operator=(const Pipeline&) = delete;
 
   bool addSink(platform::TrackSink* sink);
-  void attachLink(SerialLink* link) { _link = link; }
+  void attachLink(platform::TrackLink* link) { _link = link; }
 
   StepResult step();
   // The run is over (end of source, --frames, a signal, an error): a START still waiting
@@ -59,16 +58,14 @@ class Pipeline final : public AppControl {
   // Serial-side work without a frame (also done by step()): commands, heartbeats.
   void serviceLink();
 
-  // AppControl
-  void requestStart(const Box& boxPx, uint16_t cmdId) override;
+  // LinkControl
+  void requestStart(const platform::StartRequest& request) override;
   void requestReset() override;
   void requestStop() override;
-  void setRateHz(uint16_t hz) override;
 
   uint32_t frames() const { return _frames; }
   uint8_t state() const { return _state; }
   bool outputFailed() const { return _outputFailed; }
-  const CommandHandler& commands() const { return _commands; }
 
  private:
   // While the source waits for a frame: the link's work; a STOP ends the wait.
@@ -81,7 +78,7 @@ class Pipeline final : public AppControl {
   bool startFromOptions(const Frame& frame, Box* initBox, bool* rejected);
   // True (reported) when frame is not of the size the track began on.
   bool sizeChanged(const Frame& frame);
-  void emit(const ctp_track_t& msg);
+  void emit(const ctp_track_t& msg, const Frame& frame);
   void statusLine();
 
   FrameSource& _source;
@@ -90,8 +87,7 @@ class Pipeline final : public AppControl {
   const Clock& _clock;
   platform::Reporter& _reporter;
   PipelineOptions _options;
-  SerialLink* _link{nullptr};
-  CommandHandler _commands;
+  platform::TrackLink* _link{nullptr};
 
   platform::TrackSink* _sinks[kMaxSinks]{};
   bool _sinkOk[kMaxSinks]{};
@@ -103,8 +99,7 @@ class Pipeline final : public AppControl {
   int _trackWidth{0}, _trackHeight{0};  // [px] of the frame the track began on
   bool _autoTargetTried{false};         // --box / ground truth is used once, at the start
   bool _startPending{false};
-  Box _startBox{};
-  uint16_t _startId{0};
+  platform::StartRequest _start{};
   bool _stopRequested{false};
   uint8_t _state{CTP_STATE_IDLE};
   uint32_t _frames{0};

@@ -1,114 +1,107 @@
 #include "SerialLink.hpp"
 
-#include <cstdio>
 #include <cstring>
 
 namespace cuetrack::app {
 
-using platform::IoResult;
-using platform::IoStatus;
-
 SerialLink::SerialLink(platform::ByteStream& port, const Clock& clock, platform::Reporter& reporter)
-    : _port(port), _clock(clock), _reporter(reporter) {
+    : _port(port, clock, reporter), _clock(clock) {
   ctp_decoder_init(&_decoder);
-  _connected = _port.isOpen();
-  _lastTxUs = _clock.nowUs();
-  // A lone delimiter ends whatever half frame the receiver holds from before we started.
-  const uint8_t zero = 0;
-  enqueue(&zero, 1);
+  sendDelimiter();
 }
 
-void SerialLink::lost(const char* why) {
-  if (!_connected) return;
-  _connected = false;
-  ++_stats.disconnects;
-  // The queued messages are lost with the line: count them (one 0x00 ends each frame).
-  for (size_t i = 0; i < _txSize; ++i) _stats.txDropped += _tx[(_txHead + i) % kTxQueueBytes] == 0;
-  _txHead = _txSize = 0;
-  _rxPos = _rxLen = 0;
-  _lastRetryUs = _clock.nowUs();
-  char line[512];
-  std::snprintf(line, sizeof line, "%s; tracking continues, retrying every %u ms", why,
-                static_cast<unsigned>(kRetryPeriodUs / 1000));
-  _reporter.report(line);
-  _port.close();
+// A lone delimiter ends whatever half frame the receiver holds from before.
+void SerialLink::sendDelimiter() {
+  const uint8_t zero = 0;
+  _port.send(&zero, 1, false);
 }
 
 void SerialLink::service() {
-  if (!_connected) {
-    const uint64_t now = _clock.nowUs();
-    if (now - _lastRetryUs < kRetryPeriodUs) return;
-    _lastRetryUs = now;
-    if (!_port.reopen()) return;
-    _connected = true;
-    ++_stats.reconnects;
+  if (_port.service()) {
     ctp_decoder_init(&_decoder);
-    char line[320];
-    std::snprintf(line, sizeof line, "%s: reconnected", _port.name());
-    _reporter.report(line);
-    const uint8_t zero = 0;
-    enqueue(&zero, 1);
+    _rxPos = _rxLen = 0;
+    sendDelimiter();
   }
-  flush();
 }
 
-bool SerialLink::drain(int maxMs) {
-  // Bounded by iterations, not by the clock: a fake clock in tests does not move.
-  for (int waitedMs = 0; _connected && _txSize > 0 && waitedMs < maxMs; waitedMs += 10) {
-    if (_port.waitWritable(10)) flush();
+namespace {
+// CommandHandler speaks AppControl; the pipeline listens as a LinkControl. SET_RATE stays
+// with the link.
+struct ControlAdapter final : AppControl {
+  ControlAdapter(platform::LinkControl& c, SerialLink& l) : control(c), link(l) {}
+  void requestStart(const Box& boxPx, uint16_t cmdId) override {
+    platform::StartRequest r;
+    r.kind = platform::StartRequest::Kind::BoxPx;
+    r.box = boxPx;
+    r.token = cmdId;
+    control.requestStart(r);
   }
-  return _txSize == 0;
-}
+  void requestReset() override { control.requestReset(); }
+  void requestStop() override { control.requestStop(); }
+  void setRateHz(uint16_t hz) override { link.setRateHz(hz); }
+  platform::LinkControl& control;
+  SerialLink& link;
+};
+}  // namespace
 
-void SerialLink::flush() {
-  while (_connected && _txSize > 0) {
-    const size_t contiguous =
-        (_txHead + _txSize <= kTxQueueBytes) ? _txSize : kTxQueueBytes - _txHead;
-    const IoResult r = _port.write(_tx + _txHead, contiguous);
-    if (r.status == IoStatus::Closed || r.status == IoStatus::Error) {
-      lost(_port.error());
-      return;
+void SerialLink::poll(platform::LinkControl& control, const platform::LinkStatus& status) {
+  service();
+  ControlAdapter app(control, *this);
+  InboundEvent events[8];
+  for (;;) {
+    const size_t n = receive(events, 8);
+    for (size_t i = 0; i < n; ++i) {
+      const Reply r = _commands.handle(events[i].error, events[i].frame, app);
+      if (r.kind == Reply::Kind::Ack) sendAck(r.cmdType, r.cmdId);
+      if (r.kind == Reply::Kind::Error) {
+        // The decoder already counted framing/CRC/version errors; count malformed commands here.
+        if (events[i].error == CTP_OK) noteRejected();
+        sendError(r.cmdType, r.cmdId, r.code);
+      }
     }
-    if (r.status == IoStatus::WouldBlock || r.bytes == 0) return;
-    _txHead = (_txHead + r.bytes) % kTxQueueBytes;
-    _txSize -= r.bytes;
+    if (n < 8) break;
   }
+  if (heartbeatDue())
+    sendHeartbeat(status.state, status.frames, status.noCamera ? CTP_HB_NO_CAMERA : 0u);
 }
 
-bool SerialLink::enqueue(const uint8_t* bytes, size_t n) {
-  if (!_connected || kTxQueueBytes - _txSize < n) return false;
-  for (size_t i = 0; i < n; ++i) _tx[(_txHead + _txSize + i) % kTxQueueBytes] = bytes[i];
-  _txSize += n;
-  _lastTxUs = _clock.nowUs();
-  flush();
-  return true;
+void SerialLink::answerStart(uint32_t token, platform::StartOutcome outcome) {
+  const uint16_t id = static_cast<uint16_t>(token);
+  switch (outcome) {
+    case platform::StartOutcome::Started:
+      sendAck(CTP_CMD_START, id);
+      break;
+    case platform::StartOutcome::Refused:
+      sendError(CTP_CMD_START, id, CTP_E_REJECTED);
+      break;
+    case platform::StartOutcome::Superseded:
+      sendError(CTP_CMD_START, id, CTP_E_BUSY);
+      break;
+  }
 }
 
 size_t SerialLink::receive(InboundEvent* events, size_t max) {
   size_t count = 0;
-  while (count < max && _connected) {
+  while (count < max && _port.connected()) {
     if (_rxPos == _rxLen) {
-      const IoResult r = _port.read(_rx, sizeof _rx, 0);
-      if (r.status == IoStatus::Closed || r.status == IoStatus::Error) {
-        lost(_port.error());
-        break;
-      }
-      if (r.bytes == 0) break;
+      const size_t got = _port.read(_rx, sizeof _rx);
+      if (got == 0) break;
       _rxPos = 0;
-      _rxLen = r.bytes;
+      _rxLen = got;
     }
     while (_rxPos < _rxLen && count < max) {
       int err = 0;
       const int res = ctp_decoder_push(&_decoder, _rx[_rxPos++], &events[count].frame, &err);
       if (res == CTP_PUSH_FRAME) {
         events[count++].error = CTP_OK;
-        ++_stats.rxFrames;
+        ++_port.stats().rxFrames;
       } else if (res == CTP_PUSH_ERROR) {
         events[count++].error = err;
-        ++_stats.rxErrors;
+        ++_port.stats().rxErrors;
       }
     }
   }
+  if (!_port.connected()) _rxPos = _rxLen = 0;
   return count;
 }
 
@@ -116,12 +109,7 @@ size_t SerialLink::receive(InboundEvent* events, size_t max) {
 // on the line (queue full, link down) shows at the host as a gap in seq, and is counted.
 bool SerialLink::transmit(const uint8_t* wire, size_t n) {
   ++_seq;
-  if (enqueue(wire, n)) {
-    ++_stats.sent;
-    return true;
-  }
-  ++_stats.txDropped;
-  return false;
+  return _port.send(wire, n);
 }
 
 bool SerialLink::sendTrack(ctp_track_t track) {
@@ -140,7 +128,7 @@ bool SerialLink::sendTrack(ctp_track_t track) {
 }
 
 bool SerialLink::heartbeatDue() const {
-  return _connected && _clock.nowUs() - _lastTxUs >= kHeartbeatPeriodUs;
+  return _port.connected() && _clock.nowUs() - _port.lastTxUs() >= kHeartbeatPeriodUs;
 }
 
 void SerialLink::sendHeartbeat(uint8_t state, uint32_t frames, uint8_t flags) {
@@ -150,7 +138,7 @@ void SerialLink::sendHeartbeat(uint8_t state, uint32_t frames, uint8_t flags) {
   h.state = state;
   h.flags = flags;
   h.frames = frames;
-  h.rx_errors = _stats.rxErrors;
+  h.rx_errors = _port.stats().rxErrors;
   uint8_t wire[CTP_MAX_WIRE];
   transmit(wire, ctp_encode_heartbeat(&h, wire, sizeof wire));
 }

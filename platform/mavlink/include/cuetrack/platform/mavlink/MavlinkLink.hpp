@@ -1,0 +1,99 @@
+// MAVLink 2 as the app's TrackLink: cuetrack as a camera component (MAV_TYPE_CAMERA) that
+// PX4, ArduPilot and QGroundControl understand. Over the same transmit queue as
+// cuetrack's own protocol (QueuedPort: a stalled autopilot never blocks the tracker,
+// drops are counted, the device is retried when it goes away).
+//   out: HEARTBEAT at 1 Hz; CAMERA_TRACKING_IMAGE_STATUS every frame (or at the interval
+//        MAV_CMD_SET_MESSAGE_INTERVAL sets); LANDING_TARGET while tracking in 3D;
+//        CAMERA_INFORMATION on MAV_CMD_REQUEST_MESSAGE; one COMMAND_ACK per command.
+//   in:  COMMAND_LONG: CAMERA_TRACK_RECTANGLE, CAMERA_TRACK_POINT, CAMERA_STOP_TRACKING,
+//        SET_MESSAGE_INTERVAL, REQUEST_MESSAGE. Others addressed to us: UNSUPPORTED.
+// docs/mavlink.md describes every field.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "cuetrack/core/Clock.hpp"
+#include "cuetrack/platform/ByteStream.hpp"
+#include "cuetrack/platform/QueuedPort.hpp"
+#include "cuetrack/platform/Reporter.hpp"
+#include "cuetrack/platform/TrackLink.hpp"
+#include "cuetrack/platform/mavlink/CameraMount.hpp"
+#include "cuetrack/platform/mavlink/MavlinkCodec.hpp"
+#include "cuetrack/platform/mavlink/MavlinkMessages.hpp"
+
+namespace cuetrack::platform::mavlink {
+
+struct LinkConfig {
+  uint8_t sysId = 1;                  // the vehicle's system id (the autopilot's, usually 1)
+  uint8_t compId = kMavCompIdCamera;  // our component id
+  CameraMount mount{};
+  // LANDING_TARGET with x, y, z in MAV_FRAME_BODY_FRD (ArduPilot); false: angles and
+  // distance only, position_valid 0 (PX4 reads only that, as an IRLock-style report).
+  bool landingPosition = true;
+};
+
+class MavlinkLink final : public TrackLink {
+ public:
+  static constexpr uint64_t kHeartbeatPeriodUs = 1000000;  // MAVLink's 1 Hz
+
+  MavlinkLink(ByteStream& port, const Clock& clock, Reporter& reporter, const LinkConfig& config);
+
+  // TrackLink
+  void poll(LinkControl& control, const LinkStatus& status) override;
+  void sendFrame(const FrameReport& report) override;
+  void answerStart(uint32_t token, StartOutcome outcome) override;
+  bool drain(int maxMs) override { return _port.drain(maxMs); }
+  bool connected() const override { return _port.connected(); }
+  const LinkStats& stats() const override { return _port.stats(); }
+
+  const ParserStats& parserStats() const { return _parser.stats(); }
+
+ private:
+  // A message interval as MAV_CMD_SET_MESSAGE_INTERVAL sets it, applied by frame time.
+  struct Interval {
+    int64_t us = 0;  // 0: every frame; -1: off
+    bool sent = false;
+    uint64_t lastUs = 0;
+    bool due(uint64_t nowUs);
+  };
+  // A track command waiting for the tracker's answer on the next frame.
+  struct PendingStart {
+    bool used = false;
+    uint32_t token = 0;
+    uint16_t command = 0;
+    uint8_t mode = 0;  // kTrackingMode*
+    uint8_t sysId = 0, compId = 0;
+  };
+  static constexpr int kPendingSlots = 2;  // the old one is answered as the new one arrives
+
+  bool forUs(uint8_t targetSystem, uint8_t targetComponent) const;
+  void handle(const Message& m, LinkControl& control);
+  void handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t fromComp, LinkControl& control);
+  uint8_t startTracking(const CommandLong& c, uint8_t fromSys, uint8_t fromComp,
+                        LinkControl& control);
+  uint8_t setInterval(const CommandLong& c);
+  bool transmit(uint32_t msgId, const uint8_t* payload, size_t len);
+  void sendAck(uint16_t command, uint8_t result, uint8_t toSys, uint8_t toComp);
+  void sendHeartbeat(const LinkStatus& status);
+  void sendCameraInformation();
+  void sendStatus(const FrameReport& r);
+  void sendLandingTarget(const FrameReport& r);
+
+  QueuedPort _port;
+  const Clock& _clock;
+  LinkConfig _config;
+  Parser _parser;
+  uint8_t _rx[256]{};
+  uint8_t _seq{0};
+  bool _heartbeatSent{false};
+  uint64_t _lastHeartbeatUs{0};
+  uint64_t _startUs{0};
+  uint32_t _nextToken{1};
+  PendingStart _pending[kPendingSlots]{};
+  uint8_t _trackingMode{kTrackingModeNone};
+  Interval _statusInterval{}, _landingInterval{};
+  int _widthPx{0}, _heightPx{0};  // of the last frame, for CAMERA_INFORMATION
+};
+
+}  // namespace cuetrack::platform::mavlink

@@ -1,0 +1,301 @@
+#include "cuetrack/platform/mavlink/MavlinkLink.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+
+namespace cuetrack::platform::mavlink {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr uint32_t kFirmwareVersion = 0x00000100;  // 0.1.0 as (patch << 16) | (minor << 8) | major
+constexpr int64_t kIntervalOff = -1;
+constexpr uint8_t kDeferred = 0xFF;  // not a MAV_RESULT: the ACK waits for the tracker
+
+bool inUnit(float v) {
+  return std::isfinite(v) && v >= 0.f && v <= 1.f;
+}
+
+// A command's "target camera id": 0 (all cameras), NaN (not given, as some senders mark
+// an unused parameter) or our component id.
+bool cameraIsUs(float id, uint8_t compId) {
+  return std::isnan(id) || id == 0.f || id == static_cast<float>(compId);
+}
+
+}  // namespace
+
+bool MavlinkLink::Interval::due(uint64_t nowUs) {
+  if (us < 0) return false;
+  // 10 % slack: frame times jitter, and 30 fps at 66,666 us must give every 2nd frame.
+  const uint64_t periodUs = static_cast<uint64_t>(us);
+  if (sent && nowUs - lastUs < periodUs - periodUs / 10) return false;
+  sent = true;
+  lastUs = nowUs;
+  return true;
+}
+
+MavlinkLink::MavlinkLink(ByteStream& port, const Clock& clock, Reporter& reporter,
+                         const LinkConfig& config)
+    : _port(port, clock, reporter), _clock(clock), _config(config) {
+  _startUs = _clock.nowUs();
+}
+
+bool MavlinkLink::transmit(uint32_t msgId, const uint8_t* payload, size_t len) {
+  Header h;
+  h.seq = _seq++;  // a message that cannot go out leaves a gap in seq: the peer sees the drop
+  h.sysId = _config.sysId;
+  h.compId = _config.compId;
+  h.msgId = msgId;
+  uint8_t wire[kMaxFrameBytes];
+  const size_t n = encodeFrame(h, payload, len, wire, sizeof wire);
+  return n > 0 && _port.send(wire, n);
+}
+
+void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
+  if (_port.service()) _parser.reset();
+  for (;;) {
+    const size_t got = _port.read(_rx, sizeof _rx);
+    for (size_t i = 0; i < got; ++i) {
+      Message m;
+      const uint32_t badBefore = _parser.stats().badCrc + _parser.stats().badFrame;
+      if (_parser.push(_rx[i], &m)) {
+        ++_port.stats().rxFrames;
+        handle(m, control);
+      }
+      _port.stats().rxErrors += _parser.stats().badCrc + _parser.stats().badFrame - badBefore;
+    }
+    if (got < sizeof _rx) break;
+  }
+  const uint64_t now = _clock.nowUs();
+  if (_port.connected() && (!_heartbeatSent || now - _lastHeartbeatUs >= kHeartbeatPeriodUs)) {
+    sendHeartbeat(status);
+    _heartbeatSent = true;
+    _lastHeartbeatUs = now;
+  }
+}
+
+// Commands for another system or component are not ours to answer.
+bool MavlinkLink::forUs(uint8_t targetSystem, uint8_t targetComponent) const {
+  return (targetSystem == 0 || targetSystem == _config.sysId) &&
+         (targetComponent == 0 || targetComponent == _config.compId);
+}
+
+void MavlinkLink::handle(const Message& m, LinkControl& control) {
+  if (m.header.msgId == kMsgCommandLong) {
+    const CommandLong c = unpackCommandLong(m.payload);
+    if (forUs(c.targetSystem, c.targetComponent))
+      handleCommand(c, m.header.sysId, m.header.compId, control);
+  } else if (m.header.msgId == kMsgCommandInt) {
+    const CommandInt c = unpackCommandInt(m.payload);
+    if (forUs(c.targetSystem, c.targetComponent))
+      sendAck(c.command, kResultCommandLongOnly, m.header.sysId, m.header.compId);
+  }
+}
+
+void MavlinkLink::handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t fromComp,
+                                LinkControl& control) {
+  uint8_t result = kResultUnsupported;
+  switch (c.command) {
+    case kCmdCameraTrackRectangle:
+    case kCmdCameraTrackPoint:
+      result = startTracking(c, fromSys, fromComp, control);
+      if (result == kDeferred) return;  // answered once the tracker has tried it
+      break;
+    case kCmdCameraStopTracking:
+      if (!cameraIsUs(c.param[0], _config.compId)) {
+        result = kResultDenied;
+        break;
+      }
+      control.requestReset();
+      _trackingMode = kTrackingModeNone;
+      result = kResultAccepted;
+      break;
+    case kCmdSetMessageInterval:
+      result = setInterval(c);
+      break;
+    case kCmdRequestMessage:
+      if (c.param[0] == static_cast<float>(kMsgCameraInformation)) {
+        sendAck(c.command, kResultAccepted, fromSys, fromComp);  // the ACK comes first
+        sendCameraInformation();
+        return;
+      }
+      result = kResultDenied;  // a message we do not send on request
+      break;
+    default:
+      break;
+  }
+  sendAck(c.command, result, fromSys, fromComp);
+}
+
+uint8_t MavlinkLink::startTracking(const CommandLong& c, uint8_t fromSys, uint8_t fromComp,
+                                   LinkControl& control) {
+  StartRequest r;
+  float camera = 0.f;
+  if (c.command == kCmdCameraTrackRectangle) {
+    const float x0 = c.param[0], y0 = c.param[1], x1 = c.param[2], y1 = c.param[3];
+    camera = c.param[4];
+    if (!inUnit(x0) || !inUnit(y0) || !inUnit(x1) || !inUnit(y1) || !(x1 > x0) || !(y1 > y0))
+      return kResultDenied;
+    r.kind = StartRequest::Kind::BoxNormalised;
+    r.box = Box{x0, y0, x1 - x0, y1 - y0};
+  } else {
+    camera = c.param[3];
+    const float radius = std::isnan(c.param[2]) ? 0.f : c.param[2];  // NaN: not given
+    if (!inUnit(c.param[0]) || !inUnit(c.param[1]) || !inUnit(radius)) return kResultDenied;
+    r.kind = StartRequest::Kind::PointNormalised;
+    r.pointX = c.param[0];
+    r.pointY = c.param[1];
+    r.radius = radius;
+  }
+  if (!cameraIsUs(camera, _config.compId)) return kResultDenied;
+  // A free slot: the pipeline answers the older pending start (Superseded) before it
+  // keeps this one, so at most two are ever waiting.
+  PendingStart* slot = nullptr;
+  for (PendingStart& p : _pending)
+    if (!p.used) slot = &p;
+  if (slot == nullptr) return kResultTemporarilyRejected;
+  r.token = _nextToken++;
+  *slot = PendingStart{
+      true,
+      r.token,
+      c.command,
+      c.command == kCmdCameraTrackRectangle ? kTrackingModeRectangle : kTrackingModePoint,
+      fromSys,
+      fromComp};
+  control.requestStart(r);
+  return kDeferred;
+}
+
+void MavlinkLink::answerStart(uint32_t token, StartOutcome outcome) {
+  for (PendingStart& p : _pending) {
+    if (!p.used || p.token != token) continue;
+    p.used = false;
+    uint8_t result = kResultAccepted;
+    if (outcome == StartOutcome::Refused) result = kResultDenied;
+    if (outcome == StartOutcome::Superseded) result = kResultCancelled;
+    if (outcome == StartOutcome::Started) _trackingMode = p.mode;
+    sendAck(p.command, result, p.sysId, p.compId);
+    return;
+  }
+}
+
+uint8_t MavlinkLink::setInterval(const CommandLong& c) {
+  const float id = c.param[0], us = c.param[1];
+  Interval* target = nullptr;
+  if (id == static_cast<float>(kMsgCameraTrackingImageStatus)) target = &_statusInterval;
+  if (id == static_cast<float>(kMsgLandingTarget)) target = &_landingInterval;
+  if (target == nullptr || !std::isfinite(us) || us < -1.f || us > 1e9f) return kResultDenied;
+  target->us = us < 0.f ? kIntervalOff : static_cast<int64_t>(us);  // 0: the default, every frame
+  target->sent = false;
+  return kResultAccepted;
+}
+
+void MavlinkLink::sendAck(uint16_t command, uint8_t result, uint8_t toSys, uint8_t toComp) {
+  CommandAck a;
+  a.command = command;
+  a.result = result;
+  a.targetSystem = toSys;
+  a.targetComponent = toComp;
+  uint8_t p[16];
+  transmit(kMsgCommandAck, p, pack(a, p));
+}
+
+// system_status: BOOT while no camera, ACTIVE while a target is tracked, else STANDBY;
+// custom_mode: cuetrack's own state (CTP_STATE_*), | 0x100 while no camera.
+void MavlinkLink::sendHeartbeat(const LinkStatus& status) {
+  Heartbeat h;
+  h.type = kMavTypeCamera;
+  h.autopilot = kMavAutopilotInvalid;
+  h.systemStatus = status.noCamera                      ? kMavStateBoot
+                   : status.state == CTP_STATE_TRACKING ? kMavStateActive
+                                                        : kMavStateStandby;
+  h.customMode = status.state | (status.noCamera ? 0x100u : 0u);
+  uint8_t p[16];
+  transmit(kMsgHeartbeat, p, pack(h, p));
+}
+
+void MavlinkLink::sendCameraInformation() {
+  CameraInformation ci;
+  ci.timeBootMs = static_cast<uint32_t>((_clock.nowUs() - _startUs) / 1000);
+  ci.firmwareVersion = kFirmwareVersion;
+  ci.focalLength = kNaN;  // in mm: the intrinsics are in px
+  ci.sensorSizeH = kNaN;
+  ci.sensorSizeV = kNaN;
+  ci.flags = kCameraCapHasTrackingPoint | kCameraCapHasTrackingRectangle;
+  ci.resolutionH = static_cast<uint16_t>(_widthPx);
+  ci.resolutionV = static_cast<uint16_t>(_heightPx);
+  std::snprintf(ci.vendorName, sizeof ci.vendorName, "cuetrack");
+  std::snprintf(ci.modelName, sizeof ci.modelName, "RGB-D tracker");
+  uint8_t p[240];
+  transmit(kMsgCameraInformation, p, pack(ci, p));
+}
+
+void MavlinkLink::sendFrame(const FrameReport& r) {
+  _widthPx = r.widthPx;
+  _heightPx = r.heightPx;
+  if (_statusInterval.due(r.track.time_us)) sendStatus(r);
+  const bool located = r.track.state == CTP_STATE_TRACKING &&
+                       (r.track.flags & CTP_FLAG_HAS_3D) != 0 && r.intrinsics.valid();
+  if (located && _landingInterval.due(r.track.time_us)) sendLandingTarget(r);
+}
+
+// The box as fractions of the image: NaN while no target is located.
+void MavlinkLink::sendStatus(const FrameReport& r) {
+  CameraTrackingImageStatus s;
+  s.targetData = kTrackingTargetDataInStatus;
+  s.pointX = s.pointY = s.radius = kNaN;
+  s.recTopX = s.recTopY = s.recBottomX = s.recBottomY = kNaN;
+  const ctp_track_t& t = r.track;
+  if (t.state == CTP_STATE_IDLE) {
+    s.trackingStatus = kTrackingStatusIdle;
+    s.trackingMode = kTrackingModeNone;
+  } else if (t.state != CTP_STATE_TRACKING) {
+    s.trackingStatus = kTrackingStatusError;  // lost: searching, no box to show
+    s.trackingMode = _trackingMode;
+  } else if (r.widthPx > 0 && r.heightPx > 0) {
+    s.trackingStatus = kTrackingStatusActive;
+    // Started from ground truth or --box: reported as a rectangle.
+    s.trackingMode = _trackingMode == kTrackingModeNone ? kTrackingModeRectangle : _trackingMode;
+    const float w = static_cast<float>(r.widthPx), h = static_cast<float>(r.heightPx);
+    s.recTopX = static_cast<float>(t.box_px[0]) / w;
+    s.recTopY = static_cast<float>(t.box_px[1]) / h;
+    s.recBottomX = static_cast<float>(t.box_px[0] + t.box_px[2]) / w;
+    s.recBottomY = static_cast<float>(t.box_px[1] + t.box_px[3]) / h;
+    s.pointX = 0.5f * (s.recTopX + s.recBottomX);
+    s.pointY = 0.5f * (s.recTopY + s.recBottomY);
+    const float sidePx = static_cast<float>(t.box_px[2] > t.box_px[3] ? t.box_px[2] : t.box_px[3]);
+    s.radius = 0.5f * sidePx / w;
+  }
+  uint8_t p[40];
+  transmit(kMsgCameraTrackingImageStatus, p, pack(s, p));
+}
+
+void MavlinkLink::sendLandingTarget(const FrameReport& r) {
+  const ctp_track_t& t = r.track;
+  const CameraIntrinsics& k = r.intrinsics;
+  const float uPx = static_cast<float>(t.box_px[0]) + 0.5f * static_cast<float>(t.box_px[2]);
+  const float vPx = static_cast<float>(t.box_px[1]) + 0.5f * static_cast<float>(t.box_px[3]);
+  LandingTarget lt;
+  lt.timeUsec = t.time_us;
+  lt.angleX = std::atan((uPx - k.cx) / k.fx);
+  lt.angleY = std::atan((vPx - k.cy) / k.fy);
+  lt.sizeX = 2.f * std::atan(0.5f * static_cast<float>(t.box_px[2]) / k.fx);
+  lt.sizeY = 2.f * std::atan(0.5f * static_cast<float>(t.box_px[3]) / k.fy);
+  const float camM[3] = {static_cast<float>(t.centre_mm[0]) / 1000.f,
+                         static_cast<float>(t.centre_mm[1]) / 1000.f,
+                         static_cast<float>(t.centre_mm[2]) / 1000.f};
+  float bodyM[3];
+  cameraToBodyFrd(_config.mount, camM, bodyM);
+  lt.x = bodyM[0];
+  lt.y = bodyM[1];
+  lt.z = bodyM[2];
+  lt.distance = std::sqrt(bodyM[0] * bodyM[0] + bodyM[1] * bodyM[1] + bodyM[2] * bodyM[2]);
+  lt.frame = kMavFrameBodyFrd;
+  lt.type = kLandingTargetTypeVisionOther;
+  lt.positionValid = _config.landingPosition ? 1 : 0;
+  uint8_t p[64];
+  transmit(kMsgLandingTarget, p, pack(lt, p));
+}
+
+}  // namespace cuetrack::platform::mavlink

@@ -1,0 +1,214 @@
+// Our MAVLink against the official C library (../shared/tools/mavlink-c): it decodes
+// every message MavlinkLink sends with the fields we meant, and our parser reads the
+// commands it frames. In-process, so it also runs on aarch64 and armhf under qemu.
+// Skipped (reported as such) when the shared folder is absent.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "Skip.hpp"
+#include "cuetrack/platform/fake/FakeClock.hpp"
+#include "cuetrack/platform/fake/FakeSerial.hpp"
+#include "cuetrack/platform/fake/MemoryReporter.hpp"
+#include "cuetrack/platform/mavlink/MavlinkLink.hpp"
+#ifdef CUETRACK_HAVE_MAVLINK_C
+#include "official/OfficialMavlink.hpp"
+#endif
+
+using namespace cuetrack;
+using namespace cuetrack::platform;
+using namespace cuetrack::platform::mavlink;
+
+#ifndef CUETRACK_HAVE_MAVLINK_C
+TEST_CASE("the official MAVLink library decodes what we send") {
+  CUETRACK_SKIP("no " CUETRACK_SHARED_DIR "/tools/mavlink-c at configure time");
+}
+#else
+using namespace cuetrack::test;
+
+namespace {
+
+struct Control final : LinkControl {
+  std::vector<StartRequest> starts;
+  int resets = 0;
+  void requestStart(const StartRequest& r) override { starts.push_back(r); }
+  void requestReset() override { ++resets; }
+  void requestStop() override {}
+};
+
+}  // namespace
+
+TEST_CASE("our CRC_EXTRA and payload sizes are the library's") {
+  const uint32_t ids[] = {kMsgHeartbeat,
+                          kMsgCommandInt,
+                          kMsgCommandLong,
+                          kMsgCommandAck,
+                          kMsgLandingTarget,
+                          kMsgCameraInformation,
+                          kMsgCameraTrackingImageStatus};
+  for (uint32_t id : ids) {
+    INFO("message " << id);
+    REQUIRE(messageInfo(id) != nullptr);
+    CHECK(messageInfo(id)->crcExtra == official::crcExtraOf(id));
+  }
+}
+
+TEST_CASE("the official library decodes every message MavlinkLink sends, fields as meant") {
+  FakeClock clock(1000);
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  LinkConfig config;
+  config.sysId = 3;
+  config.compId = 101;
+  config.mount.pitchDeg = -90.f;  // looking down
+  MavlinkLink link(cable.a(), clock, reporter, config);
+  Control control;
+  LinkStatus status;
+  link.poll(control, status);  // HEARTBEAT
+  FrameReport r;
+  r.widthPx = 640;
+  r.heightPx = 480;
+  r.intrinsics = kKinectV1Intrinsics;
+  r.track.state = CTP_STATE_TRACKING;
+  r.track.flags = CTP_FLAG_HAS_3D;
+  r.track.time_us = 123456789;
+  r.track.box_px[0] = 400;
+  r.track.box_px[1] = 100;
+  r.track.box_px[2] = 50;
+  r.track.box_px[3] = 60;
+  r.track.centre_mm[0] = 450;
+  r.track.centre_mm[1] = -300;
+  r.track.centre_mm[2] = 2500;
+  link.sendFrame(r);  // CAMERA_TRACKING_IMAGE_STATUS + LANDING_TARGET
+  // Commands framed by the library: info request, a rectangle, a stop.
+  uint8_t w[300];
+  const float info[7] = {static_cast<float>(kMsgCameraInformation), 0, 0, 0, 0, 0, 0};
+  size_t n = official::encodeCommandLong(255, 190, 3, 101, kCmdRequestMessage, info, w, sizeof w);
+  REQUIRE(cable.b().write(w, n).bytes == n);
+  const float rect[7] = {0.1f, 0.2f, 0.3f, 0.6f, 0, 0, 0};
+  n = official::encodeCommandLong(255, 190, 3, 101, kCmdCameraTrackRectangle, rect, w, sizeof w);
+  REQUIRE(cable.b().write(w, n).bytes == n);
+  const float stop[7] = {0, 0, 0, 0, 0, 0, 0};
+  n = official::encodeCommandLong(255, 190, 3, 0, kCmdCameraStopTracking, stop, w, sizeof w);
+  REQUIRE(cable.b().write(w, n).bytes == n);
+  link.poll(control, status);
+  REQUIRE(control.starts.size() == 1);
+  CHECK(control.starts[0].box.x == 0.1f);
+  CHECK(control.starts[0].box.h == Approx(0.4f));
+  CHECK(control.resets == 1);
+  link.answerStart(control.starts[0].token, StartOutcome::Started);
+
+  official::Decoder dec;
+  std::vector<official::Decoded> got;
+  int bad = 0;
+  uint8_t buf[4096];
+  const IoResult rr = cable.b().read(buf, sizeof buf, 0);
+  for (size_t i = 0; i < rr.bytes; ++i) {
+    official::Decoded d;
+    const int res = dec.push(buf[i], &d);
+    if (res == 1) got.push_back(d);
+    bad += res < 0;
+  }
+  CHECK(bad == 0);
+  REQUIRE(got.size() == link.stats().sent);  // 100 %: every message we sent
+  REQUIRE(got.size() == 7);
+  for (size_t i = 0; i < got.size(); ++i) {
+    CHECK(got[i].seq == i);
+    CHECK(got[i].sysId == 3);
+    CHECK(got[i].compId == 101);
+  }
+  CHECK(got[0].msgId == 0);
+  CHECK(got[0].hbType == kMavTypeCamera);
+  CHECK(got[0].hbAutopilot == kMavAutopilotInvalid);
+  const official::Decoded& s = got[1];
+  REQUIRE(s.msgId == kMsgCameraTrackingImageStatus);
+  CHECK(s.trackingStatus == kTrackingStatusActive);
+  CHECK(s.targetData == kTrackingTargetDataInStatus);
+  CHECK(s.recTopX == Approx(400.f / 640));
+  CHECK(s.recTopY == Approx(100.f / 480));
+  CHECK(s.recBottomX == Approx(450.f / 640));
+  CHECK(s.recBottomY == Approx(160.f / 480));
+  const official::Decoded& t = got[2];
+  REQUIRE(t.msgId == kMsgLandingTarget);
+  CHECK(t.timeUsec == 123456789u);
+  CHECK(t.angleX == Approx(std::atan((425.f - 325.5f) / 518.f)));
+  CHECK(t.angleY == Approx(std::atan((130.f - 253.5f) / 519.f)));
+  CHECK(t.sizeX == Approx(2 * std::atan(25.f / 518.f)));
+  // Looking down: forward = -image down, right = image right, down = optical axis.
+  CHECK(t.x == Approx(0.3f));
+  CHECK(t.y == Approx(0.45f));
+  CHECK(t.z == Approx(2.5f));
+  CHECK(t.distance == Approx(std::sqrt(0.09f + 0.2025f + 6.25f)));
+  CHECK(t.frame == kMavFrameBodyFrd);
+  CHECK(t.positionValid == 1);
+  CHECK(t.type == kLandingTargetTypeVisionOther);
+  REQUIRE(got[3].msgId == kMsgCommandAck);
+  CHECK(got[3].ackCommand == kCmdRequestMessage);
+  CHECK(got[3].ackResult == kResultAccepted);
+  CHECK(got[3].ackTargetSystem == 255);
+  CHECK(got[3].ackTargetComponent == 190);
+  REQUIRE(got[4].msgId == kMsgCameraInformation);
+  CHECK(got[4].camFlags == (kCameraCapHasTrackingPoint | kCameraCapHasTrackingRectangle));
+  CHECK(got[4].camResolutionH == 640);
+  CHECK(got[4].camResolutionV == 480);
+  CHECK(std::strcmp(got[4].camVendor, "cuetrack") == 0);
+  REQUIRE(got[5].msgId == kMsgCommandAck);  // the stop, answered at once
+  CHECK(got[5].ackCommand == kCmdCameraStopTracking);
+  CHECK(got[5].ackResult == kResultAccepted);
+  REQUIRE(got[6].msgId == kMsgCommandAck);  // the rectangle, once the tracker took it
+  CHECK(got[6].ackCommand == kCmdCameraTrackRectangle);
+  CHECK(got[6].ackResult == kResultAccepted);
+}
+
+TEST_CASE("the worked examples of docs/mavlink.md decode with the official library") {
+  const uint8_t heartbeat[] = {0xFD, 0x09, 0x00, 0x00, 0x00, 0x01, 0x64, 0x00, 0x00, 0x00, 0x01,
+                               0x00, 0x00, 0x00, 0x1E, 0x08, 0x00, 0x04, 0x03, 0x46, 0xA4};
+  const uint8_t status[] = {0xFD, 0x1F, 0x00, 0x00, 0x01, 0x01, 0x64, 0x13, 0x01, 0x00, 0x00,
+                            0x00, 0xF0, 0x3E, 0x00, 0x00, 0x10, 0x3F, 0x00, 0x00, 0x40, 0x3D,
+                            0x00, 0x00, 0xE0, 0x3E, 0x00, 0x00, 0x00, 0x3F, 0x00, 0x00, 0x00,
+                            0x3F, 0x00, 0x00, 0x20, 0x3F, 0x01, 0x02, 0x04, 0x77, 0xF9};
+  official::Decoder dec;
+  std::vector<official::Decoded> got;
+  for (uint8_t b : heartbeat) {
+    official::Decoded d;
+    if (dec.push(b, &d) == 1) got.push_back(d);
+  }
+  for (uint8_t b : status) {
+    official::Decoded d;
+    if (dec.push(b, &d) == 1) got.push_back(d);
+  }
+  REQUIRE(got.size() == 2);
+  CHECK(got[0].hbType == kMavTypeCamera);
+  CHECK(got[0].hbSystemStatus == kMavStateActive);
+  CHECK(got[0].hbCustomMode == 1);
+  CHECK(got[1].msgId == kMsgCameraTrackingImageStatus);
+  CHECK(got[1].recTopX * 640 == 280.f);
+  CHECK(got[1].recBottomY * 480 == 300.f);
+  CHECK(got[1].radius == 0.046875f);
+  // And our link sends exactly these bytes for that box.
+  FakeClock clock(1000);
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  MavlinkLink link(cable.a(), clock, reporter, LinkConfig{});
+  Control control;
+  LinkStatus tracking;
+  tracking.state = CTP_STATE_TRACKING;
+  link.poll(control, tracking);
+  FrameReport r;
+  r.widthPx = 640;
+  r.heightPx = 480;
+  r.track.state = CTP_STATE_TRACKING;
+  r.track.box_px[0] = 280;
+  r.track.box_px[1] = 240;
+  r.track.box_px[2] = 40;
+  r.track.box_px[3] = 60;
+  link.sendFrame(r);
+  uint8_t buf[128];
+  const IoResult rr = cable.b().read(buf, sizeof buf, 0);
+  REQUIRE(rr.bytes == sizeof heartbeat + sizeof status);
+  CHECK(std::memcmp(buf, heartbeat, sizeof heartbeat) == 0);
+  CHECK(std::memcmp(buf + sizeof heartbeat, status, sizeof status) == 0);
+}
+#endif
