@@ -91,8 +91,10 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   const float x1 = fmath::clampf(box.x + box.w, 0.f, static_cast<float>(_imageW));
   const float y1 = fmath::clampf(box.y + box.h, 0.f, static_cast<float>(_imageH));
   if (!(x1 > x0) || !(y1 > y0)) return InitError::BoxOutsideImage;
-  const Box b{x0, y0, x1 - x0, y1 - y0};
-  if (b.w < kMinWindowPx || b.h < kMinWindowPx) return InitError::BoxTooSmall;
+  const Box target{x0, y0, x1 - x0, y1 - y0};
+  if (target.w < kMinTargetPx || target.h < kMinTargetPx) return InitError::BoxTooSmall;
+  _padding = WindowPadding::forTarget(target);
+  const Box b = _padding.toWindow(target);  // the window tracked
 
   const bool depthOk = frame.hasDepth() && frame.depthMm.width == frame.rgb.width &&
                        frame.depthMm.height == frame.rgb.height;
@@ -353,7 +355,7 @@ TrackResult Tracker::update(const Frame& frame) {
   TrackResult r;
   r.state = _state;
   if (_state == TrackState::Idle) return r;
-  r.box = _lastBox;
+  r.box = _padding.toTarget(_lastBox);
   if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
   const uint64_t t0 = now();
   const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
@@ -387,7 +389,7 @@ TrackResult Tracker::update(const Frame& frame) {
   if (!e.box.empty()) _lastBox = e.box;
 
   r.state = _state;
-  r.box = _lastBox;
+  r.box = _padding.toTarget(_lastBox);
   r.confidence = e.confidence;
   r.learned = learned;
   if (_is3d) {

@@ -9,12 +9,14 @@
 
 namespace cuetrack::test {
 
-class MovingSquare {
+// Side: the square's side [px] (48 in most tests; a few px for the small-target test).
+template <int Side>
+class MovingSquareOf {
  public:
-  static constexpr int kW = 320, kH = 240, kSide = 48;
+  static constexpr int kW = 320, kH = 240, kSide = Side;
   static constexpr int kTex = 64;
 
-  explicit MovingSquare(uint32_t seed = 1) {
+  explicit MovingSquareOf(uint32_t seed = 1) {
     Rng r(seed);
     for (int i = 0; i < kTex * kTex; ++i) {
       const int b = ((i % kTex) / 8 + (i / kTex) / 8) % 3;
@@ -23,19 +25,24 @@ class MovingSquare {
     }
     for (int i = 0; i < kSide * kSide; ++i) {
       const int x = i % kSide, y = i / kSide;
-      const bool q = ((x / 12) + (y / 12)) % 2 == 0;
+      // A 4 x 4 checker with a yellow centre (cells of 12 px and 18..30 at side 48).
+      const bool q = ((4 * x / kSide) + (4 * y / kSide)) % 2 == 0;
       _obj[i] = q ? Rgb8{220, 60, 40} : Rgb8{40, 70, 200};
-      if (x > 18 && x < 30 && y > 18 && y < 30) _obj[i] = Rgb8{240, 230, 60};
+      const int c0 = 3 * kSide / 8, c1 = 5 * kSide / 8;
+      if (x > c0 && x < c1 && y > c0 && y < c1) _obj[i] = Rgb8{240, 230, 60};
     }
   }
 
-  // Object position at frame t [px, top-left].
+  // Object position at frame t [px, top-left]: 3 px a frame across and a triangle wave
+  // of +-30 px up and down at side 48, both in proportion to the side.
   void position(int t, float* x, float* y) const {
-    *x = 40.f + 3.f * static_cast<float>(t);
-    // A triangle wave (no libm: the scene must be the same bits on every platform).
+    constexpr float s = static_cast<float>(kSide) / 48.f;  // exactly 1 at side 48
+    *x = 40.f + 3.f * s * static_cast<float>(t);
+    // (No libm: the scene must be the same bits on every platform.)
     const int p = t % 52;
     *y = 80.f +
-         30.f * (p < 26 ? static_cast<float>(p) / 13.f - 1.f : 3.f - static_cast<float>(p) / 13.f);
+         30.f * s *
+             (p < 26 ? static_cast<float>(p) / 13.f - 1.f : 3.f - static_cast<float>(p) / 13.f);
   }
   Box truth(int t) const {
     float x, y;
@@ -70,5 +77,7 @@ class MovingSquare {
   Rgb8 _rgb[kW * kH];
   uint16_t _depth[kW * kH];
 };
+
+using MovingSquare = MovingSquareOf<48>;
 
 }  // namespace cuetrack::test

@@ -12,6 +12,7 @@
 #include "cuetrack/core/LostSearch.hpp"
 #include "cuetrack/core/ModeGuard.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
+#include "cuetrack/core/WindowPadding.hpp"
 
 using namespace cuetrack;
 
@@ -307,4 +308,23 @@ TEST_CASE("ScanOrder: windows by 8 px row band, stable within a band", "[core][s
   CHECK(order[2] == 4);
   CHECK(order[3] == 2);  // band 2
   CHECK(order[4] == 0);  // band 5
+}
+
+TEST_CASE("WindowPadding: a small target's window is padded about its centre, and back",
+          "[core][padding]") {
+  const Box big{10.f, 20.f, 30.f, 40.f};
+  const WindowPadding none = WindowPadding::forTarget(big);
+  CHECK(none.toWindow(big).w == big.w);  // 16 px and over: the box itself
+  CHECK(none.toTarget(big).x == big.x);
+  const Box tiny{100.f, 50.f, 6.f, 8.f};
+  const WindowPadding p = WindowPadding::forTarget(tiny);
+  const Box w = p.toWindow(tiny);
+  CHECK(w.w == Approx(tuning::kMinTrackedSidePx));
+  CHECK(w.h == Approx(tuning::kMinTrackedSidePx));
+  CHECK(w.x + 0.5f * w.w == Approx(103.f));  // same centre
+  CHECK(w.y + 0.5f * w.h == Approx(54.f));
+  const Box back = p.toTarget(Box{w.x + 4.f, w.y, w.w, w.h});  // the window moved 4 px
+  CHECK(back.x == Approx(104.f));
+  CHECK(back.w == Approx(6.f));
+  CHECK(back.h == Approx(8.f));
 }

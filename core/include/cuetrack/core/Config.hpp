@@ -11,8 +11,10 @@ namespace cuetrack {
 inline constexpr int kMaxImageWidth = 640;                           // Kinect v1 colour/depth [px]
 inline constexpr int kMaxImageHeight = 480;                          // [px]
 inline constexpr int kMaxPixels = kMaxImageWidth * kMaxImageHeight;  // 307,200
-// The smallest window side [px]: init boxes, particles and negatives alike.
+// The smallest window side [px] of particles and negatives.
 inline constexpr float kMinWindowPx = 8.f;
+// The smallest first box a user may give [px] (tracked padded: WindowPadding.hpp).
+inline constexpr float kMinTargetPx = 6.f;
 // Integral images carry one extra zero row and column.
 inline constexpr int kMaxIntegralWidth = kMaxImageWidth + 1;
 inline constexpr int kMaxIntegralHeight = kMaxImageHeight + 1;

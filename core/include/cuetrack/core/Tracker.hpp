@@ -32,6 +32,7 @@
 #include "cuetrack/core/TrackResult.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
 #include "cuetrack/core/TrainingSet.hpp"
+#include "cuetrack/core/WindowPadding.hpp"
 
 namespace cuetrack {
 
@@ -39,7 +40,7 @@ enum class InitError : uint8_t {
   None = 0,
   EmptyBox,         // w or h <= 0
   BoxOutsideImage,  // box does not intersect the image
-  BoxTooSmall,      // smaller than the smallest feature support
+  BoxTooSmall,      // smaller than kMinTargetPx along a side
   NoColour,         // frame without colour image
   ImageTooLarge,    // larger than kMaxImageWidth x kMaxImageHeight
   NoDepth,          // 3D state space without depth, or no valid depth inside the box
@@ -116,8 +117,9 @@ class Tracker {
   int _imageW = 0, _imageH = 0;
   CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
-  FastMotion _fast{};  // fastMotion: jumping particles, coasting over dropped frames
-  Box _lastBox{};
+  FastMotion _fast{};              // fastMotion: jumping particles, coasting over dropped frames
+  Box _lastBox{};                  // the window tracked (padded for a small target)
+  WindowPadding _padding{};        // target -> window, for a target under kMinTrackedSidePx
   SizeFilter2d _sizeFilter{};      // 2D: the estimate's size, smoothed
   TemplateAnchor _templateAnchor;  // 2D, scaleAnchor2d: the init box's grey template
   Particle _lastEstimate{};

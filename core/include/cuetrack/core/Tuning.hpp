@@ -53,6 +53,11 @@ inline constexpr float kVelocityNoiseMm2PerS2 = 550.f;
 inline constexpr float kPositionNoise = 0.12f;
 }  // namespace motion3d
 
+// A target narrower or lower than this [px] is tracked on a window padded with context
+// to this side (WindowPadding): on the 32-cell feature grid a smaller window rounds most
+// features' halves to nothing.
+inline constexpr float kMinTrackedSidePx = 16.f;
+
 // While lost, the motion noise is this many times larger, so the cloud spreads.
 inline constexpr float kLostSpread = 3.f;
 // The ROI of the integral tables: the particles' boxes plus this x their mean size per side.
