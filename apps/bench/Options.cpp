@@ -186,14 +186,15 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       }
       o->seed = s;
     } else if (a == "--json" || a == "--markdown" || a == "--csv" || a == "--plots" ||
-               a == "--results" || a == "--overlay") {
+               a == "--results" || a == "--overlay" || a == "--peer-cache") {
       if (!value(&v)) return false;
-      std::string& dst = a == "--json"       ? o->jsonPath
-                         : a == "--markdown" ? o->markdownPath
-                         : a == "--csv"      ? o->csvDir
-                         : a == "--plots"    ? o->plotDir
-                         : a == "--overlay"  ? o->overlayDir
-                                             : o->resultsDir;
+      std::string& dst = a == "--json"         ? o->jsonPath
+                         : a == "--markdown"   ? o->markdownPath
+                         : a == "--csv"        ? o->csvDir
+                         : a == "--plots"      ? o->plotDir
+                         : a == "--overlay"    ? o->overlayDir
+                         : a == "--peer-cache" ? o->peerCacheDir
+                                               : o->resultsDir;
       dst = v;
     } else if (a == "--paper") {
       if (!value(&v)) return false;

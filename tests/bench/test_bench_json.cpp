@@ -12,9 +12,10 @@ using namespace cuetrack::bench;
 
 namespace {
 
-const std::vector<std::string> kFigureKeys = {"frames",    "overlap",   "hit",         "pascal",
-                                              "center_px", "center_mm", "center_z_mm", "ms_median",
-                                              "ms_mean",   "allocs"};
+const std::vector<std::string> kFigureKeys = {
+    "frames",         "overlap",      "hit",     "pascal",   "center_px", "center_mm",
+    "center_z_mm",    "ms_median",    "ms_mean", "allocs",   "auc",       "precision20",
+    "overlap_spread", "overlap_runs", "success", "precision"};
 
 EntryResult makeEntry(const std::string& tracker, const std::string& config, bool secondRan) {
   EntryResult e;
