@@ -11,7 +11,7 @@
 # change (docs/algorithm.md): keep it only if the average overlap rises by more than the
 # spread and no sequence falls by more than it.
 # Environment: CUETRACK_SHARED_DIR (default ../shared), BUILD (default build/host),
-# OUT (default build/devset), RUNS (5), PEERS (opencv-csrt,opencv-kcf,opencv-medianflow;
+# OUT (default build/devset), PEER_CACHE (default $OUT/peer-cache), RUNS (5), PEERS (opencv-csrt,opencv-kcf,opencv-medianflow;
 # empty for none), FRAMES (cut every sequence; quick checks only).
 # Exit: 0 done; 1 a sequence or output failed; 77 no ../shared (skipped, with a message).
 set -euo pipefail
@@ -51,7 +51,7 @@ trackers=cuetrack
 frames_opt=()
 [ -n "$FRAMES" ] && frames_opt=(--frames "$FRAMES")
 cmd=("$BENCH" --quiet --tracker "$trackers" --config "$(IFS=,; echo "${configs[*]}")"
-     --runs "$RUNS" --peer-runs 1 --peer-cache "$OUT/peer-cache" "${frames_opt[@]}"
+     --runs "$RUNS" --peer-runs 1 --peer-cache "${PEER_CACHE:-$OUT/peer-cache}" "${frames_opt[@]}"
      --json "$OUT/devset.json" --markdown "$OUT/devset-bench.md" --plots "$OUT/plots"
      "${seqs[@]}")
 start=$(date +%s)
