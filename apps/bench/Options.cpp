@@ -53,9 +53,7 @@ const char* usage() {
          "                     (repeatable; default cuetrack)\n"
          "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best, or a\n"
          "                     preset with a beyond-the-paper switch off: best-nolost,\n"
-         "                     best-fixedsize, best-noanchor, best-noanchorcloud,\n"
-         "                     best-nomodeguard, best-norefine, best-nofastmotion,\n"
-         "                     best-noshift, best-nolearndepth; or a paper preset\n"
+         "                     best-fixedsize, best-nofastmotion; or a paper preset\n"
          "                     with 2D negatives centred: 1.1-centrednegatives\n"
          "                     (repeatable; default best)\n"
          "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
@@ -139,8 +137,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
         if (!isCuetrackConfig(c)) {
           *err = "--config: unknown configuration '" + c +
                  "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
-                 "best-noanchor, best-noanchorcloud, best-nomodeguard, best-norefine, "
-                 "best-nofastmotion, best-noshift, best-nolearndepth, 1.1-centrednegatives)";
+                 "best-nofastmotion, 1.1-centrednegatives)";
           return false;
         }
         configs.push_back(c);

@@ -127,10 +127,10 @@ TEST_CASE("ablations of best (a beyond-the-paper switch off) run as configuratio
   CHECK(r.exitCode == 0);
   CHECK(r.out.find("best-nofastm") != std::string::npos);
   CHECK(r.out.find("4 frames left out") != std::string::npos);
-  // The cloud following the template anchor acts in 2D only: best on RGB alone.
-  r = runBench("synth:moving --frames 6 --runs 1 --quiet --rgb-only --config best-noanchorcloud");
-  CHECK(r.exitCode == 0);
-  CHECK(r.out.find("best-noancho") != std::string::npos);
+  // A removed switch is refused with the list of those there are.
+  r = runBench("synth:moving --frames 6 --runs 1 --quiet --config best-nomodeguard");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("unknown configuration 'best-nomodeguard'") != std::string::npos);
 }
 
 TEST_CASE("3D presets place a synthetic target's centre within centimetres; 2D ones report none") {
