@@ -12,6 +12,7 @@
 
 #include "AllocCounter.hpp"
 #include "SharedData.hpp"
+#include "Skip.hpp"
 #include "cuetrack/core/Tracker.hpp"
 #include "cuetrack/drivers/OpenCvSources.hpp"
 
@@ -87,12 +88,9 @@ BoxError boxError(const std::string& avi, const TrackerConfig& cfg, uint64_t see
   return e;
 }
 
-// BoBoT H (the still panda), or "" with a warning when the shared data is absent.
+// BoBoT H (the still panda); absent without the shared data.
 std::string pandaVideo() {
-  const std::string avi = test::sharedDataDir() + "/bobot/Vid_H_panda.avi";
-  if (test::pathExists(avi)) return avi;
-  WARN("shared data absent (" << avi << "): skipped");
-  return "";
+  return test::sharedDataDir() + "/bobot/Vid_H_panda.avi";
 }
 
 constexpr int kWholeH = 411;  // BoBoT H: every frame after the first
@@ -113,7 +111,7 @@ TEST_CASE("in 2D, corner-anchored negatives and the template anchor hold a still
   // with the template anchor on top (best's 2D) the size must stay within a few percent;
   // the anchor's shift step must hold the centre closer than its size ladder alone.
   const std::string avi = pandaVideo();
-  if (avi.empty()) return;
+  if (!test::pathExists(avi)) CUETRACK_SKIP("shared data absent (" << avi << ")");
   const TrackerConfig shipped = presetConfig(Preset::Test1_1);
   TrackerConfig centred = shipped, anchored = shipped;
   centred.anchoredNegatives2d = false;
@@ -157,7 +155,7 @@ TEST_CASE("in 2D, a cloud that follows the template anchor keeps a still target'
   // for larger on nearly every frame without ever catching up. With the cloud moved by
   // part of each correction (best), the correction stays in the state.
   const std::string avi = pandaVideo();
-  if (avi.empty()) return;
+  if (!test::pathExists(avi)) CUETRACK_SKIP("shared data absent (" << avi << ")");
   const TrackerConfig best = presetConfig(Preset::Best);
   REQUIRE(best.anchorMovesCloud);
   TrackerConfig reportOnly = best;
@@ -177,8 +175,7 @@ TEST_CASE("in 2D, a cloud that follows the template anchor keeps a still target'
 TEST_CASE("best keeps a real chair's box on real Kinect depth", "[core][e2e][shared]") {
   const std::string dir = test::sharedDataDir() + "/kinect-stills/nyu-joinmap";
   if (!test::pathExists(dir)) {
-    WARN("shared data absent (" << dir << "): skipped");
-    return;
+    CUETRACK_SKIP("shared data absent (" << dir << ")");
   }
   // The wing chair of still 5; its box includes the legs, which the silhouette's middle
   // columns do not see (the floor shows between them).
@@ -202,8 +199,7 @@ TEST_CASE("best keeps a real chair's box on real Kinect depth", "[core][e2e][sha
 TEST_CASE("best's mode guard keeps a keyboard whose cloud splits", "[core][e2e][shared]") {
   const std::string dir = test::sharedDataDir() + "/kinect-stills/tum-fr1";
   if (!test::pathExists(dir)) {
-    WARN("shared data absent (" << dir << "): skipped");
-    return;
+    CUETRACK_SKIP("shared data absent (" << dir << ")");
   }
   // The TUM desk's keyboard: repetitive keys in front of the table. On seed 30 of 1-60
   // the cloud splits between the keyboard and the table above it; the weighted mean

@@ -1,8 +1,9 @@
 // Honest skips for Catch2 2.13 (which has no SKIP of its own): CUETRACK_SKIP(reason)
 // prints the reason, marks the run as skipped and leaves the test case. Our main
 // (catch_main.cpp) then exits with kSkipReturnCode when nothing failed, and ctest,
-// told that code by cuetrack_add_test(... SKIPPABLE), reports the test as skipped,
-// never as passed.
+// told that code by cuetrack_add_test (SKIP_RETURN_CODE), reports the test as skipped,
+// never as passed. One ctest test is one executable: a skipped case marks the whole
+// executable skipped (its other cases still ran, and any failure still fails it).
 #pragma once
 
 #include <catch2/catch.hpp>
