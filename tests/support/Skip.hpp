@@ -26,3 +26,12 @@ int& skipCount();
     WARN("SKIPPED: " << reason);     \
     return;                          \
   } while (false)
+
+// A statement: a part of the test case cannot run here (e.g. kernels for an instruction
+// set this CPU lacks). Prints the reason and marks the run as skipped, but does not
+// return: the rest still runs, and a failed check still fails the test.
+#define CUETRACK_SKIP_PART(reason)   \
+  do {                               \
+    ++::cuetrack::test::skipCount(); \
+    WARN("SKIPPED: " << reason);     \
+  } while (false)
