@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "Process.hpp"
+#include "Skip.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
@@ -140,8 +141,7 @@ int runOnRecording(const std::string& rec, const std::string& csv, const std::st
 
 TEST_CASE("tracks sent by cuetrack over a pty equal the tracks cuetrack-listen decodes") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -179,8 +179,7 @@ TEST_CASE("tracks sent by cuetrack over a pty equal the tracks cuetrack-listen d
 
 TEST_CASE("commands over a pty start, reset and stop the app; garbage gets ERROR replies") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -258,8 +257,7 @@ TEST_CASE("commands over a pty start, reset and stop the app; garbage gets ERROR
 
 TEST_CASE("cuetrack-listen --send starts tracking and prints the ACK") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -291,8 +289,7 @@ TEST_CASE("cuetrack-listen --send starts tracking and prints the ACK") {
 
 TEST_CASE("garbage from the device side is rejected and counted by the listener") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -343,8 +340,7 @@ TEST_CASE("garbage from the device side is rejected and counted by the listener"
 
 TEST_CASE("when the serial peer goes away the app reports it, keeps tracking, reconnects") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -447,8 +443,7 @@ TEST_CASE("a recording whose frames change size, or whose ground truth is refuse
 
 TEST_CASE("cuetrack-listen ends cleanly when the port closes") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;

@@ -12,6 +12,7 @@
 
 #include "AllocCounter.hpp"
 #include "SharedData.hpp"
+#include "Skip.hpp"
 #include "cuetrack/core/Tracker.hpp"
 #include "cuetrack/drivers/OpenCvSources.hpp"
 
@@ -87,12 +88,9 @@ BoxError boxError(const std::string& avi, const TrackerConfig& cfg, uint64_t see
   return e;
 }
 
-// BoBoT H (the still panda), or "" with a warning when the shared data is absent.
+// BoBoT H (the still panda); absent without the shared data.
 std::string pandaVideo() {
-  const std::string avi = test::sharedDataDir() + "/bobot/Vid_H_panda.avi";
-  if (test::pathExists(avi)) return avi;
-  WARN("shared data absent (" << avi << "): skipped");
-  return "";
+  return test::sharedDataDir() + "/bobot/Vid_H_panda.avi";
 }
 
 }  // namespace
@@ -108,7 +106,7 @@ TEST_CASE("in 2D, corner-anchored negatives hold a still target's size", "[core]
   // head above the whole panda, and the size drifts there (docs/algorithm.md); negatives
   // anchored at the estimate's corners and edges (1.1 as shipped) must drift less.
   const std::string avi = pandaVideo();
-  if (avi.empty()) return;
+  if (!test::pathExists(avi)) CUETRACK_SKIP("shared data absent (" << avi << ")");
   const TrackerConfig shipped = presetConfig(Preset::Test1_1);
   TrackerConfig centred = shipped;
   centred.anchoredNegatives2d = false;
@@ -127,8 +125,7 @@ TEST_CASE("in 2D, corner-anchored negatives hold a still target's size", "[core]
 TEST_CASE("best keeps a real chair's box on real Kinect depth", "[core][e2e][shared]") {
   const std::string dir = test::sharedDataDir() + "/kinect-stills/nyu-joinmap";
   if (!test::pathExists(dir)) {
-    WARN("shared data absent (" << dir << "): skipped");
-    return;
+    CUETRACK_SKIP("shared data absent (" << dir << ")");
   }
   // The wing chair of still 5; its box includes the legs, which the silhouette's middle
   // columns do not see (the floor shows between them).

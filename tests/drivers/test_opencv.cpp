@@ -19,6 +19,7 @@
 #include <string>
 
 #include "SharedData.hpp"
+#include "Skip.hpp"
 #include "TempDir.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
 #include "cuetrack/drivers/OpenCvSources.hpp"
@@ -206,8 +207,7 @@ TEST_CASE("BoBoT video reader: own video, unreadable video", "[opencv][bobot]") 
   {
     cv::VideoWriter vw(avi, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0, cv::Size(320, 240));
     if (!vw.isOpened()) {
-      WARN("this OpenCV cannot write MJPG AVI: skipped");
-      return;
+      CUETRACK_SKIP("this OpenCV cannot write MJPG AVI");
     }
     for (int i = 0; i < 6; ++i) vw.write(cv::Mat(240, 320, CV_8UC3, cv::Scalar(i * 40, 0, 0)));
   }
@@ -254,8 +254,7 @@ TEST_CASE("BoBoT video reader: own video, unreadable video", "[opencv][bobot]") 
 TEST_CASE("real BoBoT sequences: frame counts and ground-truth alignment", "[opencv][shared]") {
   const std::string dir = test::sharedDataDir() + "/bobot";
   if (!test::pathExists(dir)) {
-    WARN("shared data absent (" << dir << "): skipped");
-    return;
+    CUETRACK_SKIP("shared data absent (" << dir << ")");
   }
   struct Seq {
     const char* name;
@@ -302,8 +301,7 @@ TEST_CASE("real BoBoT sequences: frame counts and ground-truth alignment", "[ope
 TEST_CASE("real TUM stills: 16-bit PNG depth (value / 5 = mm)", "[opencv][shared][stills]") {
   const std::string dir = test::sharedDataDir() + "/kinect-stills/tum-fr1";
   if (!test::pathExists(dir)) {
-    WARN("shared data absent (" << dir << "): skipped");
-    return;
+    CUETRACK_SKIP("shared data absent (" << dir << ")");
   }
   auto depth = std::make_unique<FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight>>();
   auto colour = std::make_unique<FixedImage<Rgb8, kMaxImageWidth, kMaxImageHeight>>();

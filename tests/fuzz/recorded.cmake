@@ -10,6 +10,6 @@ set(_rec_src ${_rec}/src/RecordedParsers.cpp ${_rec}/src/GroundTruth.cpp ${_rec}
 foreach(name pnm index gt intrinsics)
   cuetrack_add_fuzzer(recorded_${name}
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/recorded/fuzz_recorded_${name}.cpp ${_rec_src})
-  target_include_directories(fuzz_recorded_${name} PRIVATE ${_rec}/include
-    ${CMAKE_SOURCE_DIR}/core/include ${CMAKE_SOURCE_DIR}/drivers/common/include)
+  target_include_directories(fuzz_recorded_${name} PRIVATE ${_rec}/include)
+  target_link_libraries(fuzz_recorded_${name} PRIVATE cuetrack_frame_source)
 endforeach()

@@ -82,7 +82,10 @@ for k in "${!setting[@]}"; do
   [ "$k" = CUETRACK_EXTRA_ARGS ] || [ -n "${setting[$k]}" ] || fail "setting $k is empty"
 done
 # Run it the way a board would, but on a pseudo-terminal pair in place of the UART.
-command -v socat >/dev/null || fail "socat not found (scripts/setup.sh installs it)"
+# Without socat (scripts/setup.sh installs it) this part cannot run: exit 77, which ctest
+# reports as skipped (SKIP_RETURN_CODE), not as a pass.
+command -v socat >/dev/null ||
+  { echo "SKIPPED: socat not found: the service's command line is not run" >&2; exit 77; }
 setting[CUETRACK_SERIAL]=$work/ttyA
 read -ra words <<<"$(sed -n 's/^ExecStart=//p' "$r/usr/lib/systemd/system/cuetrack.service")"
 args=()
