@@ -61,13 +61,13 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     static WaitingSource waiting(
         [](void* ctx, char* e, size_t n) {
           const AppOptions& o = *static_cast<const AppOptions*>(ctx);
-          return openSource(o.source, o.seed, o.frames, e, n);
+          return openSource(o.source, o.seed, o.frames, e, n, o.skipBadFrames);
         },
         &opt, clock, sleeper, reporter, &platform::stopRequested);
     waiting.tryOpen();
     source = &waiting;
   } else {
-    source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err);
+    source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err, opt.skipBadFrames);
     if (!source) {
       reporter.report(err);
       return kExitSource;
@@ -144,6 +144,10 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
                           : r == StepResult::Done        ? "end of source or --frames"
                           : r == StepResult::OutputsGone ? "every output failed"
                                                          : "error");
+    // Damaged frames skipped (--skip-bad-frames) never reached the tracker: say how many.
+    if (source->skippedFrames() > 0 && n > 0 && static_cast<size_t>(n) < sizeof err)
+      n += std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
+                         "; %d damaged frames skipped", source->skippedFrames());
     // What the link managed: a peer that stopped reading shows as tx-dropped.
     if (link && n > 0 && static_cast<size_t>(n) < sizeof err) {
       const platform::LinkStats& s = link->stats();
@@ -152,6 +156,9 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
                     static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors));
     }
     reporter.report(err);
+  } else if (source->skippedFrames() > 0) {
+    std::snprintf(err, sizeof err, "%d damaged frames skipped", source->skippedFrames());
+    reporter.report(err);  // even --quiet: frames are not lost without a word
   }
   switch (r) {
     case StepResult::SourceError:

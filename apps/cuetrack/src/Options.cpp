@@ -94,6 +94,8 @@ const char* usageText() {
          "  --wait-camera      with --source kinect: no Kinect plugged in yet is not an error;\n"
          "                     look for one every second until it comes (with --serial,\n"
          "                     HEARTBEATs flagged no-camera go out and commands are answered)\n"
+         "  --skip-bad-frames  skip a recording's damaged or unreadable frames (counted in the\n"
+         "                     final line) instead of stopping on the first\n"
          "  --config NAME      tracker preset: best (default), 1.1-1.4, 2.1-2.5\n"
          "  --seed N           random seed (default 1)\n"
          "  --quiet            no status line (fps, dropped frames, state) on stderr\n"
@@ -130,6 +132,8 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       out->realtime = true;
     } else if (std::strcmp(a, "--wait-camera") == 0) {
       out->waitCamera = true;
+    } else if (std::strcmp(a, "--skip-bad-frames") == 0) {
+      out->skipBadFrames = true;
     } else if (std::strcmp(a, "--source") == 0) {
       if (!value(&v)) return ParseResult::Error;
       // kinect:MODE: the tracker needs colour, so both streams or colour alone.

@@ -32,8 +32,9 @@ struct AppOptions {
   const char* preset = "best";
   uint64_t seed = 1;
   bool quiet = false;
-  bool realtime = false;    // play recordings and scenes at their own frame rate
-  bool waitCamera = false;  // --source kinect: wait for one to be plugged in (WaitingSource)
+  bool realtime = false;       // play recordings and scenes at their own frame rate
+  bool waitCamera = false;     // --source kinect: wait for one to be plugged in (WaitingSource)
+  bool skipBadFrames = false;  // a recording's damaged frames are skipped (counted), not fatal
   Protocol protocol = Protocol::Cuetrack;   // on --serial
   int mavSysId = 1;                         // MAVLink system id (the vehicle's)
   int mavCompId = 100;                      // MAVLink component id (MAV_COMP_ID_CAMERA)
