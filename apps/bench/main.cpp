@@ -18,6 +18,7 @@
 #include "Runner.hpp"
 #include "Sources.hpp"
 #include "TrackerAdapters.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
@@ -68,7 +69,7 @@ int main(int argc, char** argv) {
   }
   if (help) {
     std::fputs(usage(), stdout);
-    return 0;
+    return cuetrack::platform::stdoutWritten("cuetrack-bench") ? 0 : 1;
   }
 
   std::vector<EntryResult> results;

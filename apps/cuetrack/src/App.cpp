@@ -8,6 +8,7 @@
 #include "SerialLink.hpp"
 #include "Sources.hpp"
 #include "WaitingSource.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
@@ -25,7 +26,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   switch (parseOptions(argc, argv, &opt, err, sizeof err)) {
     case ParseResult::Help:
       std::fputs(usageText(), stdout);
-      return kExitOk;
+      return platform::stdoutWritten("cuetrack") ? kExitOk : kExitOutput;
     case ParseResult::Error:
       reporter.report(err);
       return kExitUsage;

@@ -10,9 +10,9 @@ namespace cuetrack::app {
 
 // Exit codes, also listed by --help.
 enum ExitCode : int {
-  kExitOk = 0,           // source ended, --frames reached, SIGINT/SIGTERM, or STOP command
-  kExitUsage = 1,        // bad command line
-  kExitSource = 2,       // source could not be opened, failed while reading, or changed size
+  kExitOk = 0,           // source ended, --frames reached, SIGINT/SIGTERM/SIGHUP, or STOP
+  kExitSource = 1,       // source could not be opened, failed while reading, or changed size
+  kExitUsage = 2,        // bad command line (the convention of every tool, README)
   kExitOutput = 3,       // --serial/--out could not be opened, or a file/stdout write failed
   kExitBoxRejected = 4,  // --box or ground-truth box refused by the tracker (outside...)
 };
