@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "Process.hpp"
+#include "Skip.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
@@ -620,6 +621,62 @@ TEST_CASE("SIGHUP ends cuetrack cleanly, with its final line, like SIGTERM") {
   CHECK(status == 0);
   CHECK(slurp(err).find("stopped after") != std::string::npos);
   CHECK(slurp(err).find("(signal)") != std::string::npos);
+}
+
+TEST_CASE("a damaged video frame stops cuetrack naming it, or is skipped and counted") {
+  TempDir tmp;
+  const std::string avi = tmp.file("Vid_D_damaged.avi");
+  {
+    ChildProcess synth;
+    const char* sargv[] = {CUETRACK_SYNTH_BIN, "--scene", "moving", "--frames",  "12",
+                           "--format",         "avi",     "--out",  avi.c_str(), nullptr};
+    REQUIRE(synth.start(sargv, "/dev/null", tmp.file("synth.err").c_str()));
+    int status = -1;
+    REQUIRE(synth.wait(kAppTimeoutMs, &status));
+    if (status != 0) CUETRACK_SKIP("this build writes no .avi (no OpenCV)");
+  }
+  // Flip bits inside the JPEG data of frame 7 (the 8th "00dc" chunk of the movi list).
+  static char buf[8 << 20];
+  FILE* f = std::fopen(avi.c_str(), "rb");
+  REQUIRE(f != nullptr);
+  const size_t n = std::fread(buf, 1, sizeof buf, f);
+  std::fclose(f);
+  std::string data(buf, n);
+  size_t at = data.find("movi");
+  REQUIRE(at != std::string::npos);
+  for (int k = 0; k <= 7; ++k) {
+    at = data.find("00dc", at + 4);
+    REQUIRE(at != std::string::npos);
+  }
+  uint32_t size = 0;
+  std::memcpy(&size, data.data() + at + 4, 4);
+  REQUIRE(size > 2000);
+  for (uint32_t i = size / 2; i < size / 2 + 600; i += 7) data[at + 8 + i] ^= 0x5a;
+  f = std::fopen(avi.c_str(), "wb");
+  REQUIRE(f != nullptr);
+  REQUIRE(std::fwrite(data.data(), 1, data.size(), f) == data.size());
+  std::fclose(f);
+
+  const std::string err = tmp.file("err");
+  ChildProcess strict;
+  const char* argv1[] = {CUETRACK_APP_BIN, "--source", avi.c_str(), "--quiet", nullptr};
+  REQUIRE(strict.start(argv1, "/dev/null", err.c_str()));
+  int status = -1;
+  REQUIRE(strict.wait(kAppTimeoutMs, &status));
+  INFO(slurp(err));
+  CHECK(status == 1);
+  CHECK(slurp(err).find(avi + ": frame 7 is damaged") != std::string::npos);
+
+  ChildProcess skipping;
+  const char* argv2[] = {CUETRACK_APP_BIN,    "--source", avi.c_str(),
+                         "--skip-bad-frames", "--out",    tmp.file("t.csv").c_str(),
+                         "--quiet",           nullptr};
+  REQUIRE(skipping.start(argv2, "/dev/null", err.c_str()));
+  REQUIRE(skipping.wait(kAppTimeoutMs, &status));
+  INFO(slurp(err));
+  CHECK(status == 0);
+  CHECK(slurp(err).find("1 damaged frames skipped") != std::string::npos);  // even --quiet
+  CHECK(lines(slurp(tmp.file("t.csv"))).size() == 1 + 11);  // header + the 11 good frames
 }
 
 TEST_CASE("a tool whose stdout cannot be written (/dev/full) fails with one line") {
