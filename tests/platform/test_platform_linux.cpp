@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <netinet/in.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -143,6 +144,25 @@ TEST_CASE("a disk that fills mid-row leaves whole rows only, and says so") {
     ++rows;
   }
   CHECK(rows >= 2);  // the header and at least one row made it
+}
+
+TEST_CASE("close() syncs and closes a file, stdout stays open") {
+  char path[] = "/tmp/cuetrack-close-XXXXXX";
+  const int fd = mkstemp(path);
+  REQUIRE(fd >= 0);
+  ::close(fd);
+  FdTrackSink csv;
+  REQUIRE(csv.openFile(path, TextFormat::Csv));
+  ctp_track_t t{};
+  REQUIRE(csv.write(t));
+  CHECK(csv.close());
+  CHECK_FALSE(csv.write(t));  // closed: nothing more goes to the file
+  CHECK(std::string(csv.error()) == std::string(path) + ": not open");
+  std::remove(path);
+  FdTrackSink out;
+  out.attachStdout(TextFormat::Line);
+  CHECK(out.close());  // not ours to close
+  CHECK(::fcntl(1, F_GETFD) != -1);
 }
 
 TEST_CASE("a file-size limit (ulimit -f) is a write error, not a silent death") {

@@ -134,6 +134,11 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   StepResult r = StepResult::Continue;
   while (r == StepResult::Continue && !platform::stopRequested()) r = pipeline.step();
   pipeline.finish();
+  bool closeFailed = false;
+  if (opt.outPath && !fileSink.close()) {  // the rows may sit in the page cache until here
+    reporter.report(fileSink.error());
+    closeFailed = true;
+  }
 
   if (link && !link->drain(1000))
     reporter.report("serial: could not send the last messages within 1 s");
@@ -167,7 +172,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     case StepResult::BoxRejected:
       return kExitBoxRejected;
     default:
-      return pipeline.outputFailed() ? kExitOutput : kExitOk;
+      return pipeline.outputFailed() || closeFailed ? kExitOutput : kExitOk;
   }
 }
 

@@ -41,6 +41,20 @@ bool FdTrackSink::openFile(const char* path, TextFormat format) {
   return true;
 }
 
+bool FdTrackSink::close() {
+  if (!_ownsFd || _fd < 0) return true;
+  const bool synced = ::fsync(_fd) == 0 || errno == EINVAL || errno == EROFS;  // not a file
+  const int syncErr = errno;
+  const bool closed = ::close(_fd) == 0;
+  const int closeErr = errno;
+  _fd = -1;
+  _ownsFd = false;
+  if (synced && closed) return true;
+  std::snprintf(_error, sizeof _error, "%s: write failed at close: %s", _name,
+                std::strerror(synced ? closeErr : syncErr));
+  return false;
+}
+
 void FdTrackSink::attachStdout(TextFormat format) {
   _format = format;
   _fd = 1;

@@ -22,6 +22,9 @@ class FdTrackSink final : public TrackSink {
   // Creates/truncates path ("-" = stdout). CSV writes its header here.
   bool openFile(const char* path, TextFormat format);
   void attachStdout(TextFormat format);
+  // At the end of a run: a file is synced and closed (some file systems report a full
+  // disk only then). False with error() set when that fails; stdout is left open.
+  bool close();
 
   bool write(const ctp_track_t& track) override;
   const char* error() const override { return _error; }
