@@ -745,6 +745,8 @@ TEST_CASE("documented exit codes, each with one line naming what is at fault") {
       {{CUETRACK_LISTEN_BIN}, 2, "missing PORT"},
       {{CUETRACK_LISTEN_BIN, "/dev/null", "--send", "jump"}, 2, "command 'jump'"},
       {{CUETRACK_LISTEN_BIN, "/nonexistent/tty"}, 1, "/nonexistent/tty: cannot open"},
+      // A newline in an argument does not split the error line.
+      {{CUETRACK_APP_BIN, "--source", "no\nsuch"}, 1, "no?such"},
       // One convention (README): 2 for any bad command line, in every tool.
       {{CUETRACK_APP_BIN, "--frames", "0"}, 2, "--frames 0: expected a count >= 1"},
       {{CUETRACK_APP_BIN, "--box", "1,1,20,20", "--frames", "2", "--box", "5,5,20,20"},

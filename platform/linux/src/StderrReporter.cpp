@@ -18,6 +18,10 @@ bool writeLine(int fd, const char* prefix, const char* line) {
     n = static_cast<int>(sizeof buf) - 1;
     buf[n - 1] = '\n';
   }
+  // A line stays one line: control characters echoed from input (a newline in an
+  // argument or a file name) are shown as '?'.
+  for (int i = 0; i < n - 1; ++i)
+    if (static_cast<unsigned char>(buf[i]) < 0x20 || buf[i] == 0x7f) buf[i] = '?';
   return ::write(fd, buf, static_cast<size_t>(n)) == n;
 }
 
