@@ -607,11 +607,10 @@ TEST_CASE("two listeners on one port: the second is refused, naming the first's 
 
 TEST_CASE("SIGHUP ends cuetrack cleanly, with its final line, like SIGTERM") {
   TempDir tmp;
-  const std::string err = tmp.file("err");
+  const std::string err = tmp.file("err"), csv = tmp.file("t.csv");
   ChildProcess app;
-  const char* argv[] = {
-      CUETRACK_APP_BIN,          "--frames", "1000000", "--realtime", "--stdout", "--out",
-      tmp.file("t.csv").c_str(), nullptr};
+  const char* argv[] = {CUETRACK_APP_BIN, "--frames", "1000000",   "--realtime",
+                        "--stdout",       "--out",    csv.c_str(), nullptr};
   REQUIRE(app.start(argv, "/dev/null", err.c_str()));
   REQUIRE(waitFor([&] { return slurp(err).find("fps") != std::string::npos; }, kAppTimeoutMs));
   app.signal(SIGHUP);
@@ -621,6 +620,7 @@ TEST_CASE("SIGHUP ends cuetrack cleanly, with its final line, like SIGTERM") {
   CHECK(status == 0);
   CHECK(slurp(err).find("stopped after") != std::string::npos);
   CHECK(slurp(err).find("(signal)") != std::string::npos);
+  CHECK(lines(slurp(csv)).size() > 1);  // the rows of the frames before the signal
 }
 
 TEST_CASE("a damaged video frame stops cuetrack naming it, or is skipped and counted") {
@@ -667,16 +667,16 @@ TEST_CASE("a damaged video frame stops cuetrack naming it, or is skipped and cou
   CHECK(status == 1);
   CHECK(slurp(err).find(avi + ": frame 7 is damaged") != std::string::npos);
 
+  const std::string csv = tmp.file("t.csv");
   ChildProcess skipping;
-  const char* argv2[] = {CUETRACK_APP_BIN,    "--source", avi.c_str(),
-                         "--skip-bad-frames", "--out",    tmp.file("t.csv").c_str(),
-                         "--quiet",           nullptr};
+  const char* argv2[] = {CUETRACK_APP_BIN, "--source",  avi.c_str(), "--skip-bad-frames",
+                         "--out",          csv.c_str(), "--quiet",   nullptr};
   REQUIRE(skipping.start(argv2, "/dev/null", err.c_str()));
   REQUIRE(skipping.wait(kAppTimeoutMs, &status));
   INFO(slurp(err));
   CHECK(status == 0);
   CHECK(slurp(err).find("1 damaged frames skipped") != std::string::npos);  // even --quiet
-  CHECK(lines(slurp(tmp.file("t.csv"))).size() == 1 + 11);  // header + the 11 good frames
+  CHECK(lines(slurp(csv)).size() == 1 + 11);  // header + the 11 good frames
 }
 
 TEST_CASE("a tool whose stdout cannot be written (/dev/full) fails with one line") {
