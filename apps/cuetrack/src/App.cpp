@@ -162,9 +162,19 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
                     static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors));
     }
     reporter.report(err);
-  } else if (source->skippedFrames() > 0) {
-    std::snprintf(err, sizeof err, "%d damaged frames skipped", source->skippedFrames());
-    reporter.report(err);  // even --quiet: frames are not lost without a word
+  } else {
+    // Even --quiet: frames and messages are not lost without a word.
+    if (source->skippedFrames() > 0) {
+      std::snprintf(err, sizeof err, "%d damaged frames skipped", source->skippedFrames());
+      reporter.report(err);
+    }
+    if (link && link->stats().txDropped > 0) {
+      const platform::LinkStats& s = link->stats();
+      std::snprintf(err, sizeof err, "serial sent %u tx-dropped %u rx-errors %u",
+                    static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
+                    static_cast<unsigned>(s.rxErrors));
+      reporter.report(err);
+    }
   }
   switch (r) {
     case StepResult::SourceError:
