@@ -222,6 +222,38 @@ TEST_CASE("OTB folder: JPEG frames and 1-based boxes", "[opencv][otb]") {
   checkBox(f->groundTruth, Box{0, 0, 10, 10}, 1e-4f);
 }
 
+TEST_CASE("OTB folder: a truncated JPEG is named, or skipped and counted", "[opencv][otb][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "Otb";
+  {
+    auto src = synth("box", 3);
+    auto slot = std::make_unique<FrameSlot>();
+    OtbFolderWriter w;
+    if (!w.open(dir.c_str())) FAIL(w.error());
+    while (src->next(*slot) == ReadStatus::Ok)
+      if (!w.write(*slot)) FAIL(w.error());
+    if (!w.close()) FAIL(w.error());
+  }
+  // Cut frame 2 to two thirds: libjpeg would decode it with grey rows and a warning.
+  const std::string p = dir + "/img/0002.jpg";
+  const std::string bytes = test::readText(p);
+  test::writeText(p, bytes.substr(0, bytes.size() * 2 / 3));
+  REQUIRE_FALSE(cv::imread(p).empty());  // what OpenCV alone would accept
+  auto f = std::make_unique<FrameSlot>();
+  OtbFolderReader r;
+  REQUIRE(r.open(dir.c_str()));
+  REQUIRE(r.next(*f) == ReadStatus::Ok);
+  CHECK(r.next(*f) == ReadStatus::Error);
+  CHECK(std::string(r.error()) == p + ": truncated JPEG (no end-of-image marker)");
+  SourceOptions skip;
+  skip.skipBadFrames = true;
+  OtbFolderReader s;
+  REQUIRE(s.open(dir.c_str(), skip));
+  int n = 0;
+  while (s.next(*f) == ReadStatus::Ok) ++n;
+  CHECK(n == 2);
+  CHECK(s.skippedFrames() == 1);
+}
 TEST_CASE("BoBoT video reader: own video, unreadable video", "[opencv][bobot]") {
   TempDir tmp;
   const std::string avi = tmp / "Vid_T_test.avi";

@@ -2,6 +2,9 @@
 
 #include <dirent.h>
 #include <dlfcn.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -87,6 +90,33 @@ CameraIntrinsics kinectScaled(int w, int h) {
   const float sx = static_cast<float>(w) / 640.f, sy = static_cast<float>(h) / 480.f;
   return {kKinectV1Intrinsics.fx * sx, kKinectV1Intrinsics.fy * sy, kKinectV1Intrinsics.cx * sx,
           kKinectV1Intrinsics.cy * sy};
+}
+
+bool isJpegName(const std::string& path) {
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos) return false;
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == "jpg" || ext == "jpeg";
+}
+
+// libjpeg decodes a truncated JPEG without an error (the missing rows come out grey, a
+// warning goes to stderr): a JPEG must end with its end-of-image marker FF D9 (within
+// the last 64 bytes: some writers pad after it). Every JPEG of the shared data does.
+bool jpegHasEnd(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st {};
+  uint8_t tail[64];
+  ssize_t n = -1;
+  if (::fstat(fd, &st) == 0 && st.st_size >= 4) {
+    const off_t from = st.st_size > 64 ? st.st_size - 64 : 0;
+    n = ::pread(fd, tail, static_cast<size_t>(st.st_size - from), from);
+  }
+  ::close(fd);
+  for (ssize_t i = 0; i + 1 < n; ++i)
+    if (tail[i] == 0xff && tail[i + 1] == 0xd9) return true;
+  return false;
 }
 
 // Colour as BGR, but a 16-bit image stays 16-bit so that it can be refused rather than
@@ -326,6 +356,10 @@ ReadStatus ImageFolderReader::next(FrameSlot& out) {
     // imread would block on a FIFO and read a device: regular files only.
     if (!rec::isFile(rgbPath.c_str())) {
       std::snprintf(_error, sizeof _error, "%s: not a regular file", rgbPath.c_str());
+      ok = false;
+    } else if (isJpegName(rgbPath) && !jpegHasEnd(rgbPath)) {
+      std::snprintf(_error, sizeof _error, "%s: truncated JPEG (no end-of-image marker)",
+                    rgbPath.c_str());
       ok = false;
     } else if ((_img->bgr = cv::imread(rgbPath, kColourRead)).empty()) {
       std::snprintf(_error, sizeof _error,
