@@ -163,6 +163,10 @@ TEST_CASE("a second opener of one port is refused, naming the holder; stale lock
   CHECK_FALSE(cuetrack::test::fileExists(lock.c_str()));  // released with the port
   REQUIRE(second.open(pty.a(), 115200));
   second.close();
+  // reopen() (the link's retry after a vanished device) takes the lock file again.
+  REQUIRE(second.reopen());
+  CHECK(cuetrack::test::fileExists(lock.c_str()));
+  second.close();
 
   SECTION("a lock file held by another live process names its PID") {
     const long other = static_cast<long>(getppid());  // alive while we run

@@ -70,7 +70,15 @@ bool SerialPort::open(const char* path, int baud) {
 
 bool SerialPort::reopen() {
   if (_fd >= 0) return true;
-  return openFd();
+  // close() gave up the lock file with the device: take it again first (the holder of a
+  // device that came back to someone else is named, and we stay out).
+  const bool takeLock = !_lock.held();
+  if (takeLock && !_lock.acquire(_path, _error, sizeof _error)) return false;
+  if (!openFd()) {
+    if (takeLock) _lock.release();  // a lock kept through an outage stays ours
+    return false;
+  }
+  return true;
 }
 
 bool SerialPort::openFd() {
