@@ -8,9 +8,10 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "ListenOptions.hpp"
 #include "Listener.hpp"
 #include "cuetrack/platform/CommandText.hpp"
-#include "cuetrack/platform/OptionOnce.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
@@ -20,8 +21,6 @@
 namespace {
 
 using namespace cuetrack;
-
-constexpr int kMaxSends = 32;
 
 const char* kUsage =
     "usage: cuetrack-listen PORT [--baud N] [--csv FILE] [--send COMMAND]... [--tracks N]\n"
@@ -54,15 +53,6 @@ constexpr int kExitIdle = 4;
 constexpr uint64_t kReopenPeriodUs = 500000;
 constexpr uint64_t kStatePeriodUs = 1000000;
 
-bool parseInt(const char* s, long lo, long hi, long* out) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(s, &end, 10);
-  if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi) return false;
-  *out = v;
-  return true;
-}
-
 // --state FILE: "last_seq N". False when there is no such file (a first run).
 bool readState(const char* path, uint32_t* lastSeq, char* err, size_t errLen) {
   FILE* f = std::fopen(path, "r");
@@ -94,81 +84,26 @@ bool writeState(const char* path, uint32_t lastSeq, char* err, size_t errLen) {
 
 int main(int argc, char** argv) {
   platform::StderrReporter problems("cuetrack-listen");
-  const char* portPath = nullptr;
-  const char* csvPath = nullptr;
-  const char* statePath = nullptr;
-  bool reconnect = false;
-  platform::OptionOnce once;
-  long baud = 115200, maxTracks = -1, idleS = -1;
-  const char* sends[kMaxSends];
-  int numSends = 0;
   char err[768];
-  for (int i = 1; i < argc; ++i) {
-    const char* a = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (a[0] == '-' && std::strcmp(a, "--send") != 0 && !once.first(a, err, sizeof err)) {
-      problems.report(err);
-      return kExitUsage;
-    }
-    if (std::strcmp(a, "--help") == 0 || std::strcmp(a, "-h") == 0) {
+  static listen::ListenOptions opt;  // static: 32 parsed commands
+  switch (listen::parseListenOptions(argc, argv, &opt, err, sizeof err)) {
+    case listen::ListenParse::Help:
       std::fputs(kUsage, stdout);
-      return 0;
-    } else if (std::strcmp(a, "--baud") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 1, 4000000, &baud) ||
-          !platform::SerialPort::baudSupported(static_cast<int>(baud))) {
-        std::snprintf(err, sizeof err, "--baud %s: unsupported (9600..921600)", argv[i]);
-        problems.report(err);
-        return kExitUsage;
-      }
-    } else if (std::strcmp(a, "--csv") == 0 && hasValue) {
-      csvPath = argv[++i];
-    } else if (std::strcmp(a, "--state") == 0 && hasValue) {
-      statePath = argv[++i];
-    } else if (std::strcmp(a, "--reconnect") == 0) {
-      reconnect = true;
-    } else if (std::strcmp(a, "--send") == 0 && hasValue) {
-      if (numSends >= kMaxSends) {
-        problems.report("too many --send (at most 32)");
-        return kExitUsage;
-      }
-      sends[numSends++] = argv[++i];
-    } else if (std::strcmp(a, "--tracks") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 1, 2000000000L, &maxTracks)) {  // 0 would wait for nothing
-        std::snprintf(err, sizeof err, "--tracks %s: expected a count >= 1", argv[i]);
-        problems.report(err);
-        return kExitUsage;
-      }
-    } else if (std::strcmp(a, "--idle-timeout") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 1, 86400, &idleS)) {
-        std::snprintf(err, sizeof err, "--idle-timeout %s: expected seconds >= 1", argv[i]);
-        problems.report(err);
-        return kExitUsage;
-      }
-    } else if (a[0] == '-' && a[1] != '\0') {
-      std::snprintf(err, sizeof err, "unknown option or missing value: '%s' (see --help)", a);
+      return platform::stdoutWritten("cuetrack-listen") ? 0 : kExitOutput;
+    case listen::ListenParse::Error:
       problems.report(err);
       return kExitUsage;
-    } else if (!portPath) {
-      portPath = a;
-    } else {
-      std::snprintf(err, sizeof err, "unexpected argument '%s' (one PORT only)", a);
-      problems.report(err);
-      return kExitUsage;
-    }
+    case listen::ListenParse::Run:
+      break;
   }
-  if (!portPath) {
-    problems.report("missing PORT (see --help)");
-    return kExitUsage;
-  }
-  // Validate every command before touching the port.
-  ctp_command_t commands[kMaxSends];
-  for (int i = 0; i < numSends; ++i) {
-    if (!platform::parseCommandText(sends[i], static_cast<uint16_t>(i + 1), &commands[i], err,
-                                    sizeof err)) {
-      problems.report(err);
-      return kExitUsage;
-    }
-  }
+  const char* portPath = opt.portPath;
+  const char* csvPath = opt.csvPath;
+  const char* statePath = opt.statePath;
+  const bool reconnect = opt.reconnect;
+  const long baud = opt.baud, maxTracks = opt.maxTracks, idleS = opt.idleS;
+  const char* const* sends = opt.sends;
+  const ctp_command_t* commands = opt.commands;
+  const int numSends = opt.numSends;
 
   platform::installStopSignals();
   static platform::SerialPort port;
