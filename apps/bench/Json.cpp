@@ -116,6 +116,8 @@ void appendEntry(std::string& out, const EntryResult& e, const char* indent) {
     Figures f = s.figures;
     if (!s.ran) f.frames = 0;
     appendFigures(out, f, s.ran);
+    out += ", \"skipped_frames\": ";
+    appendNumber(out, s.skippedFrames, 0);
     out += "}";
   }
   out += "],\n";

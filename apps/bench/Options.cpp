@@ -7,6 +7,7 @@
 #include "Peers.hpp"
 #include "TrackerAdapters.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
+#include "cuetrack/platform/OptionOnce.hpp"
 
 namespace cuetrack::bench {
 namespace {
@@ -93,8 +94,33 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
   *help = false;
   std::vector<std::string> trackers, configs;
   SequenceArg pending;  // --gt, --from, --to, --reverse wait for their SEQUENCE
+  // The run-wide settings come once; --tracker and --config add to their lists, and the
+  // per-sequence ones (--gt, --from, ...) apply to the next SEQUENCE each time.
+  static const char* const kOnce[] = {"--runs",
+                                      "--peer-runs",
+                                      "--frames",
+                                      "--max-mem",
+                                      "--seed",
+                                      "--json",
+                                      "--markdown",
+                                      "--csv",
+                                      "--plots",
+                                      "--results",
+                                      "--overlay",
+                                      "--paper",
+                                      "--skip-bad-frames",
+                                      "--rgb-only",
+                                      "--quiet"};
+  platform::OptionOnce once;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
+    for (const char* name : kOnce) {
+      char twice[64];
+      if (a == name && !once.first(argv[i], twice, sizeof twice)) {
+        *err = twice;
+        return false;
+      }
+    }
     auto value = [&](const char** v) {
       if (i + 1 >= argc) {
         *err = a + " needs a value";

@@ -120,6 +120,7 @@ bool loadPeerResult(const std::string& path, SequenceResult* out) {
         Box{float(boxes[i]), float(boxes[i + 1]), float(boxes[i + 2]), float(boxes[i + 3])});
   r.ran = true;
   r.name = out->name;
+  r.skippedFrames = out->skippedFrames;  // the sequence's, not the peer's
   *out = std::move(r);
   return true;
 }

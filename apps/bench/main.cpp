@@ -20,6 +20,7 @@
 #include "Runner.hpp"
 #include "Sources.hpp"
 #include "TrackerAdapters.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
   }
   if (help) {
     std::fputs(usage(), stdout);
-    return 0;
+    return cuetrack::platform::stdoutWritten("cuetrack-bench") ? 0 : 1;
   }
 
   std::vector<EntryResult> results;
@@ -130,6 +131,7 @@ int main(int argc, char** argv) {
           cacheable ? peerCachePath(options.peerCacheDir, spec, seq, options.seed) : "";
       SequenceResult r;
       r.name = seq.name;
+      r.skippedFrames = seq.skippedFrames;
       if (!cacheable || !loadPeerResult(cachePath, &r)) {
         r = runEntry(spec, seq, factory, runOptions, progress);
         if (cacheable && !savePeerResult(cachePath, r, &err)) {

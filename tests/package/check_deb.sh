@@ -46,7 +46,8 @@ want_files=(usr/bin/cuetrack usr/bin/cuetrack-listen usr/lib/systemd/system/cuet
             usr/share/cuetrack/protocol/cuetrack_proto.c
             usr/share/cuetrack/protocol/example/fc_link.h
             usr/share/cuetrack/protocol/example/fc_link.c usr/share/doc/cuetrack/copyright
-            usr/share/doc/cuetrack/serial-protocol.md usr/share/doc/cuetrack/mavlink.md)
+            usr/share/doc/cuetrack/serial-protocol.md usr/share/doc/cuetrack/mavlink.md
+            usr/lib/udev/rules.d/52-cuetrack-serial.rules)
 [ "$freenect" = ON ] && want_files+=(usr/bin/cuetrack-record usr/lib/udev/rules.d/51-cuetrack-kinect.rules)
 for f in "${want_files[@]}"; do
   [ -e "$r/$f" ] || fail "package lacks /$f"
