@@ -129,14 +129,17 @@ if [ -x "$ARM/bin/cuetrack-trackspeed" ] && [ -x "$ARM/bin/cuetrack" ] && [ -d "
   # encoder writing to a pseudo-terminal. (60 frames - 20 frames) / 40.
   rec="$OUT/rec-moving"
   "$BUILD/bin/cuetrack-synth" --scene moving --frames 60 --out "$rec" >/dev/null
+  # The Kinect source has no ground truth: the first box from the recording's (BoBoT
+  # format: index, then x, y, w, h as fractions of 640x480).
+  box=$(awk 'NR == 2 { printf "%d,%d,%d,%d", $2 * 640, $3 * 480, $4 * 640, $5 * 480 }' "$rec/groundtruth.txt")
   if command -v socat >/dev/null && [ -f /usr/lib/aarch64-linux-gnu/fakenect/libfreenect.so.0.5 ]; then
     socat PTY,raw,echo=0,link="$OUT/ttyA" PTY,raw,echo=0,link="$OUT/ttyB" & spid=$!
     for _ in $(seq 50); do [ -e "$OUT/ttyB" ] && break; sleep 0.1; done
     cat "$OUT/ttyB" > /dev/null & cpid=$!
     flib="LD_LIBRARY_PATH=/usr/lib/aarch64-linux-gnu/fakenect:/usr/aarch64-linux-gnu/lib:/usr/lib/aarch64-linux-gnu"
     for p in 2.1 best; do
-      a=$(icount "$flib" "FAKENECT_PATH=$rec" -- "$ARM/bin/cuetrack" --source kinect --config "$p" --frames 60 --serial "$OUT/ttyA" --quiet)
-      b=$(icount "$flib" "FAKENECT_PATH=$rec" -- "$ARM/bin/cuetrack" --source kinect --config "$p" --frames 20 --serial "$OUT/ttyA" --quiet)
+      a=$(icount "$flib" "FAKENECT_PATH=$rec" -- "$ARM/bin/cuetrack" --source kinect --box "$box" --config "$p" --frames 60 --serial "$OUT/ttyA" --quiet)
+      b=$(icount "$flib" "FAKENECT_PATH=$rec" -- "$ARM/bin/cuetrack" --source kinect --box "$box" --config "$p" --frames 20 --serial "$OUT/ttyA" --quiet)
       t=$(icount "$lib" -- "$ARM/bin/cuetrack-trackspeed" --preset "$p" --frames 60 --icount)
       u=$(icount "$lib" -- "$ARM/bin/cuetrack-trackspeed" --preset "$p" --frames 20 --icount)
       path_rows+="| $p | $(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.2f M", (a - b) / 40 / 1e6 }') | $(awk -v a="$t" -v b="$u" 'BEGIN { printf "%.2f M", (a - b) / 40 / 1e6 }') |"$'\n'
@@ -259,7 +262,8 @@ page="$OUT/benchmarks.md"
     echo "conversion (raw 11-bit depth to mm, registration), the tracker, and the serial encoder"
     echo "writing each track to a pseudo-terminal; beside the tracker alone on the same scene"
     echo "((60 frames - 20 frames) / 40, qemu-icount). Command: \`FAKENECT_PATH=rec qemu-aarch64"
-    echo "-plugin libicount.so -d plugin $ARM/bin/cuetrack --source kinect --config P --frames N --serial PTY\`."
+    echo "-plugin libicount.so -d plugin $ARM/bin/cuetrack --source kinect --box B --config P --frames N --serial PTY\`"
+    echo "(B: the recording's first ground-truth box, as \`cuetrack-bench\` starts)."
     echo
     echo "| preset | whole path / frame | tracker alone / frame |"
     echo "|---|---:|---:|"
