@@ -66,7 +66,16 @@ const char* usageText() {
          "target (default: the ground truth where the target first shows, else wait for START):\n"
          "  --box X,Y,W,H      target box in the first frame [px]\n"
          "  --no-gt            ignore ground truth: wait for --box or a serial START command\n"
-         "outputs (stdout gets one line per frame when neither --serial nor --out is given):\n"
+         "  --select           show the first frame and drag a box around the target; prints\n"
+         "                     it as --box X,Y,W,H for later runs (needs a display)\n"
+         "  --snapshot FILE.png\n"
+         "                     save the first frame with a pixel grid (every 40 px) and exit,\n"
+         "                     to read a --box off it on a board without a display\n"
+         "see it (host builds with OpenCV, needs a display):\n"
+         "  --show             live window: box, state, confidence, fps, depth beside it;\n"
+         "                     space pauses, r re-selects the target, q or Esc quits\n"
+         "outputs (stdout gets one line per frame when neither --serial nor --out is given,\n"
+         "and stdout is not a terminal: there, only with --stdout):\n"
          "  --serial DEV       stream binary track messages, accept commands (8N1 raw)\n"
          "  --baud N           9600 19200 38400 57600 115200 (default) 230400 460800 500000\n"
          "                     576000 921600\n"
@@ -130,6 +139,13 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       out->realtime = true;
     } else if (std::strcmp(a, "--wait-camera") == 0) {
       out->waitCamera = true;
+    } else if (std::strcmp(a, "--show") == 0) {
+      out->show = true;
+    } else if (std::strcmp(a, "--select") == 0) {
+      out->select = true;
+    } else if (std::strcmp(a, "--snapshot") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      out->snapshotPath = v;
     } else if (std::strcmp(a, "--source") == 0) {
       if (!value(&v)) return ParseResult::Error;
       // kinect:MODE: the tracker needs colour, so both streams or colour alone.
@@ -250,6 +266,14 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       (out->source == nullptr ||
        (std::strcmp(out->source, "kinect") != 0 && std::strncmp(out->source, "kinect:", 7) != 0))) {
     std::snprintf(err, errLen, "--wait-camera needs --source kinect or kinect:colour");
+    return ParseResult::Error;
+  }
+  if (out->select && out->hasBox) {
+    std::snprintf(err, errLen, "--select and --box: one target at a time");
+    return ParseResult::Error;
+  }
+  if (out->snapshotPath && (out->show || out->select)) {
+    std::snprintf(err, errLen, "--snapshot saves a frame and exits: not with --show or --select");
     return ParseResult::Error;
   }
   // A setting that would do nothing is refused rather than ignored.

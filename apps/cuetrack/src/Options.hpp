@@ -42,6 +42,9 @@ struct AppOptions {
   const char* mavlinkUdp = nullptr;         // --mavlink-udp HOST:PORT instead of --serial
   bool landingPosition = true;              // --mavlink-landing frd (else angles)
   const char* mavlinkOnlyOption = nullptr;  // the first --mavlink-* option given
+  bool show = false;                        // --show: live window (View.hpp, host only)
+  bool select = false;                      // --select: drag the target box on frame 1
+  const char* snapshotPath = nullptr;       // --snapshot FILE.png: frame 1 + grid, then exit
 };
 
 enum class ParseResult : uint8_t { Run, Help, Error };

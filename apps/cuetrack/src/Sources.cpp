@@ -15,6 +15,8 @@
 namespace cuetrack::app {
 namespace {
 
+char gDefaultWhy[200] = "";  // why openSource(nullptr) chose what it chose
+
 FrameSource* openSynth(const char* scene, uint64_t seed, int frames, char* err, size_t errLen) {
   SceneSpec spec;
   if (!makeScene(scene, &spec)) {
@@ -58,7 +60,21 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   if (spec == nullptr) {
 #if defined(CUETRACK_HAVE_KINECT)
     char why[160] = "";
-    if (countKinects(why, sizeof why) > 0) return openKinect(KinectStreams::Both, err, errLen);
+    const int kinects = countKinects(why, sizeof why);
+    if (kinects > 0) {
+      std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
+                    "kinect, the Kinect plugged in (--source to choose another)");
+      return openKinect(KinectStreams::Both, err, errLen);
+    }
+    std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
+                  "synth:%s, a generated scene (%s%s; --source kinect|synth:SCENE|PATH to choose)",
+                  kDefaultScene, kinects < 0 ? "Kinect unusable: " : "no Kinect found",
+                  kinects < 0 ? why : "");
+#else
+    std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
+                  "synth:%s, a generated scene (this build has no Kinect driver; --source "
+                  "synth:SCENE|PATH to choose)",
+                  kDefaultScene);
 #endif
     return openSynth(kDefaultScene, seed, frames, err, errLen);
   }
@@ -84,6 +100,14 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   static std::unique_ptr<FrameSource> recorded;
   recorded = openFrameSource(spec, options, err, errLen);
   return recorded.get();
+}
+
+void describeSourceChoice(const char* spec, char* out, size_t outLen) {
+  if (spec == nullptr && gDefaultWhy[0] != '\0') {
+    std::snprintf(out, outLen, "%s", gDefaultWhy);
+  } else {
+    std::snprintf(out, outLen, "%s", spec ? spec : "default");
+  }
 }
 
 bool kinectSupported() {

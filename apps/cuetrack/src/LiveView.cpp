@@ -1,0 +1,308 @@
+// View.hpp on OpenCV's highgui. Every highgui call of the live window happens on its own
+// thread; the tracker's thread only copies pixels into the mailbox.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <opencv2/core.hpp>
+#include <opencv2/highgui.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <thread>
+#include <vector>
+
+#include "LatestMailbox.hpp"
+#include "View.hpp"
+#include "cuetrack_proto.h"
+
+namespace cuetrack::app {
+namespace {
+
+constexpr const char* kWindow = "cuetrack";
+constexpr float kDepthFarMm = 5000.f;  // colour map range: the Kinect v1's useful depth
+constexpr int kStripPx = 44;           // status text under the image
+
+cv::Mat toBgr(const RgbView& rgb) {
+  cv::Mat bgr(rgb.height, rgb.width, CV_8UC3);
+  for (int y = 0; y < rgb.height; ++y) {
+    const Rgb8* s = rgb.row(y);
+    uint8_t* d = bgr.ptr<uint8_t>(y);
+    for (int x = 0; x < rgb.width; ++x) {
+      d[3 * x] = s[x].b;
+      d[3 * x + 1] = s[x].g;
+      d[3 * x + 2] = s[x].r;
+    }
+  }
+  return bgr;
+}
+
+cv::Scalar stateColour(uint8_t state) {
+  switch (state) {
+    case CTP_STATE_TRACKING:
+      return {0, 220, 0};
+    case CTP_STATE_LOST:
+      return {0, 0, 255};
+    default:
+      return {0, 200, 255};  // searching, idle
+  }
+}
+
+cv::Rect toRect(const Box& b) {
+  return cv::Rect(cvRound(b.x), cvRound(b.y), cvRound(b.w), cvRound(b.h));
+}
+
+}  // namespace
+
+bool displayAvailable(char* err, size_t errLen) {
+  const char* d = std::getenv("DISPLAY");
+  if (d == nullptr || *d == '\0') {
+    std::snprintf(err, errLen,
+                  "no display ($DISPLAY is not set): run it on a desktop, with ssh -X, or use "
+                  "--snapshot FILE.png");
+    return false;
+  }
+  return true;
+}
+
+bool pickBox(const Frame& frame, Box* out, char* err, size_t errLen) {
+  const cv::Mat bgr = toBgr(frame.rgb);
+  constexpr const char* kPickWindow = "cuetrack: drag a box around the target, Enter to accept";
+  cv::namedWindow(kPickWindow, cv::WINDOW_AUTOSIZE);
+  const cv::Rect r = cv::selectROI(kPickWindow, bgr, true, false);
+  cv::destroyWindow(kPickWindow);
+  cv::waitKey(1);  // lets the window close before the run goes on
+  if (r.width <= 0 || r.height <= 0) {
+    std::snprintf(err, errLen, "--select: no box was drawn (cancelled)");
+    return false;
+  }
+  *out = Box{static_cast<float>(r.x), static_cast<float>(r.y), static_cast<float>(r.width),
+             static_cast<float>(r.height)};
+  return true;
+}
+
+bool writeSnapshot(const Frame& frame, const char* path, char* err, size_t errLen) {
+  cv::Mat img = toBgr(frame.rgb);
+  const cv::Scalar line(0, 255, 255), text(255, 255, 255), shadow(0, 0, 0);
+  auto label = [&](const char* s, cv::Point at) {
+    cv::putText(img, s, at, cv::FONT_HERSHEY_PLAIN, 0.8, shadow, 2, cv::LINE_AA);
+    cv::putText(img, s, at, cv::FONT_HERSHEY_PLAIN, 0.8, text, 1, cv::LINE_AA);
+  };
+  char s[16];
+  for (int x = kSnapshotGridPx; x < img.cols; x += kSnapshotGridPx) {
+    cv::line(img, {x, 0}, {x, img.rows - 1}, line, 1);
+    std::snprintf(s, sizeof s, "%d", x);
+    label(s, {x + 2, 10});
+  }
+  for (int y = kSnapshotGridPx; y < img.rows; y += kSnapshotGridPx) {
+    cv::line(img, {0, y}, {img.cols - 1, y}, line, 1);
+    std::snprintf(s, sizeof s, "%d", y);
+    label(s, {2, y - 2});
+  }
+  bool ok = false;
+  try {
+    ok = cv::imwrite(path, img);
+  } catch (const cv::Exception& e) {
+    std::snprintf(err, errLen, "--snapshot %s: %s", path, e.what());
+    return false;
+  }
+  if (!ok) {
+    std::snprintf(err, errLen,
+                  "--snapshot %s: cannot write (folder missing, no space, or not .png)", path);
+    return false;
+  }
+  return true;
+}
+
+// One frame for the window, copied out of the tracker's slot.
+struct ViewFrame {
+  std::vector<Rgb8> rgb;
+  std::vector<uint16_t> depthMm;  // empty: no depth
+  int width = 0, height = 0;
+  ViewTrack track;
+  std::chrono::steady_clock::time_point pushedAt;
+};
+
+struct LiveView::Impl {
+  LatestMailbox<ViewFrame> mailbox;
+  std::thread thread;
+  std::atomic<bool> closing{false};
+  std::atomic<bool> quit{false};
+  std::mutex mutex;  // paused, reselect
+  std::condition_variable resumed;
+  bool paused = false;
+  bool hasReselect = false;
+  Box reselect{};
+
+  // Window thread state.
+  cv::Mat lastBgr;  // the last frame without overlay (for re-selecting on it)
+  double fps = 0.0;
+  bool haveLast = false;
+  uint32_t lastIndex = 0;
+  std::chrono::steady_clock::time_point lastAt;
+  bool shown = false;
+
+  void setPaused(bool p) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      paused = p;
+    }
+    resumed.notify_all();
+  }
+  bool isPaused() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return paused;
+  }
+
+  cv::Mat render(const ViewFrame& f) {
+    const RgbView view{f.rgb.data(), f.width, f.height, f.width};
+    lastBgr = toBgr(view);
+    cv::Mat colour = lastBgr.clone();
+    const cv::Scalar c = stateColour(f.track.state);
+    const bool hasBox = f.track.state != CTP_STATE_IDLE && f.track.box.w > 0.f;
+    if (hasBox) cv::rectangle(colour, toRect(f.track.box), c, 2);
+    cv::Mat image = colour;
+    if (!f.depthMm.empty()) {
+      const cv::Mat d(f.height, f.width, CV_16UC1, const_cast<uint16_t*>(f.depthMm.data()));
+      cv::Mat d8, depthColour;
+      d.convertTo(d8, CV_8U, 255.0 / kDepthFarMm);
+      cv::applyColorMap(d8, depthColour, cv::COLORMAP_JET);
+      depthColour.setTo(cv::Scalar(0, 0, 0), d == 0);  // no measurement: black
+      if (hasBox) cv::rectangle(depthColour, toRect(f.track.box), cv::Scalar(255, 255, 255), 2);
+      cv::hconcat(colour, depthColour, image);
+    }
+    // fps of the tracker: frames it did between two frames the window showed.
+    if (haveLast && f.track.frameIndex > lastIndex) {
+      const double dt = std::chrono::duration<double>(f.pushedAt - lastAt).count();
+      if (dt > 0) {
+        const double now = (f.track.frameIndex - lastIndex) / dt;
+        fps = fps > 0 ? 0.8 * fps + 0.2 * now : now;
+      }
+    }
+    haveLast = true;
+    lastIndex = f.track.frameIndex;
+    lastAt = f.pushedAt;
+
+    cv::Mat canvas(image.rows + kStripPx, image.cols, CV_8UC3, cv::Scalar(32, 32, 32));
+    image.copyTo(canvas(cv::Rect(0, 0, image.cols, image.rows)));
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "frame %u  %s  confidence %.2f  %.1f fps  display dropped %llu",
+                  f.track.frameIndex, ctp_state_name(f.track.state), f.track.confidence, fps,
+                  static_cast<unsigned long long>(mailbox.dropped()));
+    cv::putText(canvas, line, {6, image.rows + 17}, cv::FONT_HERSHEY_SIMPLEX, 0.5, c, 1,
+                cv::LINE_AA);
+    std::snprintf(line, sizeof line, "%sspace pause  r re-select  q quit%s",
+                  isPaused() ? "PAUSED  " : "",
+                  f.depthMm.empty() ? "" : "   depth: near blue, far red, none black");
+    cv::putText(canvas, line, {6, image.rows + 37}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                cv::Scalar(200, 200, 200), 1, cv::LINE_AA);
+    return canvas;
+  }
+
+  void run() {
+    cv::namedWindow(kWindow, cv::WINDOW_AUTOSIZE);
+    ViewFrame last;  // the shown frame, to redraw on pause
+    bool haveFrame = false;
+    while (!closing.load()) {
+      if (const ViewFrame* f = mailbox.take(std::chrono::milliseconds(10))) {
+        last.rgb = f->rgb;
+        last.depthMm = f->depthMm;
+        last.width = f->width;
+        last.height = f->height;
+        last.track = f->track;
+        last.pushedAt = f->pushedAt;
+        haveFrame = true;
+        cv::imshow(kWindow, render(last));
+        shown = true;
+      }
+      const int key = cv::waitKey(5);
+      if (key == ' ' && haveFrame) {
+        setPaused(!isPaused());
+        cv::imshow(kWindow, render(last));
+      } else if (key == 'r' && haveFrame) {
+        setPaused(true);
+        const cv::Rect r = cv::selectROI(kWindow, lastBgr, true, false);
+        if (r.width > 0 && r.height > 0) {
+          std::lock_guard<std::mutex> lock(mutex);
+          reselect = Box{static_cast<float>(r.x), static_cast<float>(r.y),
+                         static_cast<float>(r.width), static_cast<float>(r.height)};
+          hasReselect = true;
+        }
+        setPaused(false);
+      } else if (key == 'q' || key == 'Q' || key == 27) {
+        quit = true;
+      }
+      if (shown && cv::getWindowProperty(kWindow, cv::WND_PROP_VISIBLE) < 1) quit = true;
+      if (quit.load()) setPaused(false);
+    }
+    cv::destroyAllWindows();
+    cv::waitKey(1);
+  }
+};
+
+LiveView::LiveView() : _impl(std::make_unique<Impl>()) {}
+LiveView::~LiveView() {
+  close();
+}
+
+bool LiveView::start(char* err, size_t errLen) {
+  if (!displayAvailable(err, errLen)) return false;
+  _impl->thread = std::thread([this] { _impl->run(); });
+  return true;
+}
+
+void LiveView::push(const Frame& frame, const ViewTrack& track) {
+  if (!_impl->thread.joinable()) return;
+  _impl->mailbox.push([&](ViewFrame& v) {
+    const int w = frame.rgb.width, h = frame.rgb.height;
+    v.width = w;
+    v.height = h;
+    v.rgb.resize(static_cast<size_t>(w) * static_cast<size_t>(h));  // no allocation once sized
+    for (int y = 0; y < h; ++y)
+      std::memcpy(&v.rgb[static_cast<size_t>(y) * w], frame.rgb.row(y), sizeof(Rgb8) * w);
+    if (frame.hasDepth() && frame.depthMm.width == w && frame.depthMm.height == h) {
+      v.depthMm.resize(static_cast<size_t>(w) * static_cast<size_t>(h));
+      for (int y = 0; y < h; ++y)
+        std::memcpy(&v.depthMm[static_cast<size_t>(y) * w], frame.depthMm.row(y),
+                    sizeof(uint16_t) * w);
+    } else {
+      v.depthMm.clear();
+    }
+    v.track = track;
+    v.pushedAt = std::chrono::steady_clock::now();
+  });
+}
+
+void LiveView::waitWhilePaused(bool (*stop)()) {
+  std::unique_lock<std::mutex> lock(_impl->mutex);
+  while (_impl->paused && !_impl->quit.load() && !(stop && stop())) {
+    _impl->resumed.wait_for(lock, std::chrono::milliseconds(100));  // polls stop (a signal)
+  }
+}
+
+bool LiveView::takeReselect(Box* box) {
+  std::lock_guard<std::mutex> lock(_impl->mutex);
+  if (!_impl->hasReselect) return false;
+  *box = _impl->reselect;
+  _impl->hasReselect = false;
+  return true;
+}
+
+bool LiveView::quitRequested() const {
+  return _impl->quit.load();
+}
+uint64_t LiveView::droppedFrames() const {
+  return _impl->mailbox.dropped();
+}
+
+void LiveView::close() {
+  if (!_impl || !_impl->thread.joinable()) return;
+  _impl->closing = true;
+  _impl->mailbox.close();
+  _impl->thread.join();
+}
+
+}  // namespace cuetrack::app
