@@ -1,11 +1,14 @@
 // View.hpp on OpenCV's highgui. Every highgui call of the live window happens on its own
 // thread; the tracker's thread only copies pixels into the mailbox.
+#include <unistd.h>
+
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <mutex>
 #include <opencv2/core.hpp>
 #include <opencv2/highgui.hpp>
@@ -24,6 +27,8 @@ namespace {
 constexpr const char* kWindow = "cuetrack";
 constexpr float kDepthFarMm = 5000.f;  // colour map range: the Kinect v1's useful depth
 constexpr int kStripPx = 44;           // status text under the image
+// No toolbar (Qt's zoom buttons): the image starts at the window's corner, 1:1.
+constexpr int kWindowFlags = cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL;
 
 cv::Mat toBgr(const RgbView& rgb) {
   cv::Mat bgr(rgb.height, rgb.width, CV_8UC3);
@@ -50,6 +55,22 @@ cv::Scalar stateColour(uint8_t state) {
   }
 }
 
+// cv::selectROI prints its instructions on stdout, which carries the track lines: they
+// go to stderr instead.
+cv::Rect selectRoi(const char* window, const cv::Mat& image) {
+  std::fflush(stdout);
+  const int saved = dup(STDOUT_FILENO);
+  if (saved >= 0) dup2(STDERR_FILENO, STDOUT_FILENO);
+  const cv::Rect r = cv::selectROI(window, image, true, false);
+  std::cout.flush();
+  std::fflush(stdout);
+  if (saved >= 0) {
+    dup2(saved, STDOUT_FILENO);
+    close(saved);
+  }
+  return r;
+}
+
 cv::Rect toRect(const Box& b) {
   return cv::Rect(cvRound(b.x), cvRound(b.y), cvRound(b.w), cvRound(b.h));
 }
@@ -70,8 +91,8 @@ bool displayAvailable(char* err, size_t errLen) {
 bool pickBox(const Frame& frame, Box* out, char* err, size_t errLen) {
   const cv::Mat bgr = toBgr(frame.rgb);
   constexpr const char* kPickWindow = "cuetrack: drag a box around the target, Enter to accept";
-  cv::namedWindow(kPickWindow, cv::WINDOW_AUTOSIZE);
-  const cv::Rect r = cv::selectROI(kPickWindow, bgr, true, false);
+  cv::namedWindow(kPickWindow, kWindowFlags);
+  const cv::Rect r = selectRoi(kPickWindow, bgr);
   cv::destroyWindow(kPickWindow);
   cv::waitKey(1);  // lets the window close before the run goes on
   if (r.width <= 0 || r.height <= 0) {
@@ -203,7 +224,8 @@ struct LiveView::Impl {
   }
 
   void run() {
-    cv::namedWindow(kWindow, cv::WINDOW_AUTOSIZE);
+    cv::setNumThreads(1);  // drawing must not take the tracker's cores (a board has 2-4)
+    cv::namedWindow(kWindow, kWindowFlags);
     ViewFrame last;  // the shown frame, to redraw on pause
     bool haveFrame = false;
     while (!closing.load()) {
@@ -224,7 +246,7 @@ struct LiveView::Impl {
         cv::imshow(kWindow, render(last));
       } else if (key == 'r' && haveFrame) {
         setPaused(true);
-        const cv::Rect r = cv::selectROI(kWindow, lastBgr, true, false);
+        const cv::Rect r = selectRoi(kWindow, lastBgr);
         if (r.width > 0 && r.height > 0) {
           std::lock_guard<std::mutex> lock(mutex);
           reselect = Box{static_cast<float>(r.x), static_cast<float>(r.y),
