@@ -1,6 +1,8 @@
 // cuetrack-listen PORT [--baud N] [--csv FILE] [--send COMMAND]...
 // Host tool: decodes the track stream of `cuetrack --serial`, prints or saves it,
 // sends commands. Runs until interrupted or until the port closes.
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -22,7 +24,7 @@ constexpr int kMaxSends = 32;
 
 const char* kUsage =
     "usage: cuetrack-listen PORT [--baud N] [--csv FILE] [--send COMMAND]... [--tracks N]\n"
-    "                       [--idle-timeout SECONDS]\n"
+    "                       [--idle-timeout SECONDS] [--wait-port SECONDS]\n"
     "Decodes cuetrack's serial stream (docs/serial-protocol.md): one line per track on\n"
     "stdout, or with --csv a CSV file (header + one row per track; '-' = stdout). Other\n"
     "messages (ack, error, heartbeat) go to stdout, or to stderr with --csv.\n"
@@ -31,6 +33,9 @@ const char* kUsage =
     "                       the first message shows the device is up\n"
     "  --tracks N           exit after N track messages\n"
     "  --idle-timeout S     exit with code 4 when nothing arrives for S seconds\n"
+    "  --wait-port S        PORT not there yet (a USB adapter being plugged in, a socat\n"
+    "                       pty starting) in a folder that exists: wait up to S seconds\n"
+    "                       for it (default 5, 0 = fail at once)\n"
     "exit codes: 0 interrupted, port closed or --tracks reached; 1 bad command line;\n"
     "  2 port cannot be opened or a command cannot be sent; 3 the CSV (or, without --csv,\n"
     "  stdout) write failed; 4 idle timeout\n";
@@ -44,13 +49,40 @@ bool parseInt(const char* s, long lo, long hi, long* out) {
   return true;
 }
 
+// A port path that does not exist yet, in a folder that does (a pty socat is about to
+// link, a USB adapter being plugged in): wait up to waitS for it. True when it waited.
+bool waitForPort(const char* path, long waitS, const platform::MonotonicClock& clock,
+                 platform::Reporter& reporter) {
+  if (waitS <= 0 || access(path, F_OK) == 0) return false;
+  char dir[512];
+  std::snprintf(dir, sizeof dir, "%s", path);
+  char* slash = std::strrchr(dir, '/');
+  if (slash == dir) {
+    dir[1] = '\0';
+  } else if (slash) {
+    *slash = '\0';
+  } else {
+    std::snprintf(dir, sizeof dir, ".");
+  }
+  if (access(dir, F_OK) != 0) return false;  // a typo in the folder: fail at once
+  char line[600];
+  std::snprintf(line, sizeof line, "%s: not there yet, waiting up to %ld s for it", path, waitS);
+  reporter.report(line);
+  platform::MonotonicSleeper sleeper;
+  const uint64_t endUs = clock.nowUs() + static_cast<uint64_t>(waitS) * 1000000u;
+  while (access(path, F_OK) != 0 && clock.nowUs() < endUs && !platform::stopRequested()) {
+    sleeper.sleepUs(50000);  // polling a path: inotify would not see a symlink's target
+  }
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   platform::StderrReporter problems("cuetrack-listen");
   const char* portPath = nullptr;
   const char* csvPath = nullptr;
-  long baud = 115200, maxTracks = -1, idleS = -1;
+  long baud = 115200, maxTracks = -1, idleS = -1, waitPortS = 5;
   const char* sends[kMaxSends];
   int numSends = 0;
   char err[768];
@@ -87,6 +119,12 @@ int main(int argc, char** argv) {
         problems.report(err);
         return 1;
       }
+    } else if (std::strcmp(a, "--wait-port") == 0 && hasValue) {
+      if (!parseInt(argv[++i], 0, 86400, &waitPortS)) {
+        std::snprintf(err, sizeof err, "--wait-port %s: expected seconds >= 0", argv[i]);
+        problems.report(err);
+        return 1;
+      }
     } else if (a[0] == '-' && a[1] != '\0') {
       std::snprintf(err, sizeof err, "unknown option or missing value: '%s' (see --help)", a);
       problems.report(err);
@@ -115,8 +153,16 @@ int main(int argc, char** argv) {
 
   platform::installStopSignals();
   static platform::SerialPort port;
+  platform::MonotonicClock clock;
+  const bool waited = waitForPort(portPath, waitPortS, clock, problems);
   if (!port.open(portPath, static_cast<int>(baud))) {
-    problems.report(port.error());
+    if (waited) {
+      std::snprintf(err, sizeof err, "%s (waited %ld s for it; --wait-port SECONDS)", port.error(),
+                    waitPortS);
+      problems.report(err);
+    } else {
+      problems.report(port.error());
+    }
     return 2;
   }
   std::snprintf(err, sizeof err, "%s: listening at %ld baud", portPath, baud);
@@ -134,7 +180,6 @@ int main(int argc, char** argv) {
   platform::LineReporter messages(csvPath ? platform::StdStream::Err : platform::StdStream::Out);
   listen::Listener listener(port, tracks, messages, problems);
 
-  platform::MonotonicClock clock;
   uint64_t lastRxUs = clock.nowUs();
   int code = 0;
   const char* why = "interrupted";
