@@ -348,7 +348,7 @@ TEST_CASE("under Xvfb: --show draws the box the CSV reports; space pauses, q qui
   CHECK(contains(slurp(err), "summary: "));
 }
 
-TEST_CASE("under Xvfb: --select takes the box a mouse drag draws") {
+TEST_CASE("under Xvfb: --select takes the box a mouse drag draws, with and without --show") {
   const std::string xvfbPath = onPath("Xvfb"), xdotoolPath = onPath("xdotool");
   const char *xvfb = xvfbPath.c_str(), *xdotool = xdotoolPath.c_str();
   if (!*xvfb || !*xdotool) CUETRACK_SKIP("Xvfb or xdotool missing (scripts/setup.sh)");

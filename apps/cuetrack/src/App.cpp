@@ -109,6 +109,11 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     }
   }
   static FrameSlot slot;  // ~1.5 MiB
+  static LiveView view;
+  if (opt.show && !view.start(err, sizeof err)) {
+    reporter.report(err);
+    return kExitUsage;
+  }
   if (opt.select || opt.snapshotPath) {
     // The first frame, read into the pipeline's slot: the pipeline then starts on it.
     const ReadStatus rs = source->next(slot);
@@ -136,7 +141,8 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       reporter.report(err);
       return kExitOk;
     }
-    if (!pickBox(slot.frame(), &opt.box, err, sizeof err)) {
+    if (!(opt.show ? view.pick(slot.frame(), &opt.box, err, sizeof err)
+                   : pickBox(slot.frame(), &opt.box, err, sizeof err))) {
       reporter.report(err);
       return kExitUsage;
     }
@@ -223,11 +229,6 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report(banner);
   }
 
-  static LiveView view;
-  if (opt.show && !view.start(err, sizeof err)) {
-    reporter.report(err);
-    return kExitUsage;
-  }
   RunSummary summary;
   bool windowQuit = false;
   const uint64_t runStartUs = clock.nowUs();

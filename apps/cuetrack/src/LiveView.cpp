@@ -88,8 +88,9 @@ bool displayAvailable(char* err, size_t errLen) {
   return true;
 }
 
-bool pickBox(const Frame& frame, Box* out, char* err, size_t errLen) {
-  const cv::Mat bgr = toBgr(frame.rgb);
+namespace {
+// The picker's window and drag, on the thread that owns highgui.
+bool pickOn(const cv::Mat& bgr, Box* out, char* err, size_t errLen) {
   constexpr const char* kPickWindow = "cuetrack: drag a box around the target, Enter to accept";
   cv::namedWindow(kPickWindow, kWindowFlags);
   const cv::Rect r = selectRoi(kPickWindow, bgr);
@@ -102,6 +103,11 @@ bool pickBox(const Frame& frame, Box* out, char* err, size_t errLen) {
   *out = Box{static_cast<float>(r.x), static_cast<float>(r.y), static_cast<float>(r.width),
              static_cast<float>(r.height)};
   return true;
+}
+}  // namespace
+
+bool pickBox(const Frame& frame, Box* out, char* err, size_t errLen) {
+  return pickOn(toBgr(frame.rgb), out, err, errLen);
 }
 
 bool writeSnapshot(const Frame& frame, const char* path, char* err, size_t errLen) {
@@ -156,6 +162,12 @@ struct LiveView::Impl {
   bool paused = false;
   bool hasReselect = false;
   Box reselect{};
+  // A --select asked of the window thread (highgui belongs to one thread per process).
+  cv::Mat pickImage;
+  bool pickRequested = false, pickFinished = false, pickOk = false;
+  Box pickResult{};
+  char pickError[160] = "";
+  std::condition_variable pickDone;
 
   // Window thread state.
   cv::Mat lastBgr;  // the last frame without overlay (for re-selecting on it)
@@ -223,12 +235,34 @@ struct LiveView::Impl {
     return canvas;
   }
 
+  void servePick() {
+    cv::Mat image;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!pickRequested) return;
+      pickRequested = false;
+      image = pickImage;
+    }
+    Box box{};
+    char e[160] = "";
+    const bool ok = pickOn(image, &box, e, sizeof e);
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      pickOk = ok;
+      pickResult = box;
+      std::snprintf(pickError, sizeof pickError, "%s", e);
+      pickFinished = true;
+    }
+    pickDone.notify_all();
+  }
+
   void run() {
     cv::setNumThreads(1);  // drawing must not take the tracker's cores (a board has 2-4)
     cv::namedWindow(kWindow, kWindowFlags);
     ViewFrame last;  // the shown frame, to redraw on pause
     bool haveFrame = false;
     while (!closing.load()) {
+      servePick();
       if (const ViewFrame* f = mailbox.take(std::chrono::milliseconds(10))) {
         last.rgb = f->rgb;
         last.depthMm = f->depthMm;
@@ -303,6 +337,22 @@ void LiveView::waitWhilePaused(bool (*stop)()) {
   while (_impl->paused && !_impl->quit.load() && !(stop && stop())) {
     _impl->resumed.wait_for(lock, std::chrono::milliseconds(100));  // polls stop (a signal)
   }
+}
+
+bool LiveView::pick(const Frame& frame, Box* out, char* err, size_t errLen) {
+  if (!_impl->thread.joinable()) return pickBox(frame, out, err, errLen);
+  std::unique_lock<std::mutex> lock(_impl->mutex);
+  _impl->pickImage = toBgr(frame.rgb);
+  _impl->pickFinished = false;
+  _impl->pickRequested = true;
+  _impl->pickDone.wait(lock, [&] { return _impl->pickFinished || _impl->quit.load(); });
+  if (!_impl->pickFinished) {
+    std::snprintf(err, errLen, "--select: the window was closed");
+    return false;
+  }
+  if (!_impl->pickOk) std::snprintf(err, errLen, "%s", _impl->pickError);
+  *out = _impl->pickResult;
+  return _impl->pickOk;
 }
 
 bool LiveView::takeReselect(Box* box) {

@@ -43,6 +43,9 @@ class LiveView {
   LiveView& operator=(const LiveView&) = delete;
 
   bool start(char* err, size_t errLen);  // opens the window thread
+  // pickBox() on the window's thread: with --show, every highgui call must come from the
+  // one thread (Qt's GUI thread is the first that used it).
+  bool pick(const Frame& frame, Box* out, char* err, size_t errLen);
   void push(const Frame& frame, const ViewTrack& track);
   // Space paused the run: blocks until resumed, quit, or stop() returns true.
   void waitWhilePaused(bool (*stop)());

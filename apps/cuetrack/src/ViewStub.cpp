@@ -30,6 +30,9 @@ LiveView::~LiveView() = default;
 bool LiveView::start(char* err, size_t errLen) {
   return fail(err, errLen);
 }
+bool LiveView::pick(const Frame&, Box*, char* err, size_t errLen) {
+  return fail(err, errLen);
+}
 void LiveView::push(const Frame&, const ViewTrack&) {}
 void LiveView::waitWhilePaused(bool (*)()) {}
 bool LiveView::takeReselect(Box*) {
