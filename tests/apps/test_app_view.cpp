@@ -355,27 +355,33 @@ TEST_CASE("under Xvfb: --select takes the box a mouse drag draws, with and witho
   TempDir tmp;
   Xvfb x(tmp);
   REQUIRE(x.start(xvfb));
-  const std::string csv = tmp.file("t.csv"), err = tmp.file("err.txt");
-  const char* argv[] = {CUETRACK_APP_BIN, "--source", "synth:moving", "--frames", "5",
-                        "--select",       "--out",    csv.c_str(),    nullptr};
-  ChildProcess app;
-  REQUIRE(app.start(argv, nullptr, err.c_str()));
-  REQUIRE(xtool({xdotool, "search", "--sync", "--onlyvisible", "--name", "drag a box"}, tmp));
-  const std::string id = lines(slurp(tmp.file("xtool.out")))[0];
-  // The target of synth:moving's first frame is at about 291,266,30,52.
-  REQUIRE(xtool({xdotool,     "mousemove", "--window",  id.c_str(), "--sync",   "290",    "265",
-                 "mousedown", "1",         "mousemove", "--window", id.c_str(), "--sync", "305",
-                 "290",       "mousemove", "--window",  id.c_str(), "--sync",   "322",    "319",
-                 "mouseup",   "1",         "key",       "--window", id.c_str(), "Return"},
-                tmp));
-  int status = -1;
-  REQUIRE(app.wait(kAppTimeoutMs, &status));
-  CHECK(status == 0);
-  const std::string e = slurp(err);
-  CHECK(contains(e, "cuetrack: picked --box 290,265,32,54"));
-  CHECK(contains(e, "target: the box dragged with --select"));
-  CHECK_FALSE(contains(e, "poor target"));
-  const std::vector<std::string> rows = lines(slurp(csv));
-  REQUIRE(rows.size() >= 2);
-  CHECK(contains(rows[1], ",tracking,290,265,32,54,"));  // the first frame is the picked one
+  // With --show, the picker runs on the window's thread (one highgui thread per process).
+  for (const bool show : {false, true}) {
+    INFO("--show " << show);
+    const std::string csv = tmp.file(show ? "show.csv" : "t.csv"), err = tmp.file("err.txt");
+    const char* argv[] = {CUETRACK_APP_BIN, "--source",  "synth:moving",
+                          "--frames",       "5",         "--select",
+                          "--out",          csv.c_str(), show ? "--show" : nullptr,
+                          nullptr};
+    ChildProcess app;
+    REQUIRE(app.start(argv, nullptr, err.c_str()));
+    REQUIRE(xtool({xdotool, "search", "--sync", "--onlyvisible", "--name", "drag a box"}, tmp));
+    const std::string id = lines(slurp(tmp.file("xtool.out")))[0];
+    // The target of synth:moving's first frame is at about 291,266,30,52.
+    REQUIRE(xtool({xdotool,     "mousemove", "--window",  id.c_str(), "--sync",   "290",    "265",
+                   "mousedown", "1",         "mousemove", "--window", id.c_str(), "--sync", "305",
+                   "290",       "mousemove", "--window",  id.c_str(), "--sync",   "322",    "319",
+                   "mouseup",   "1",         "key",       "--window", id.c_str(), "Return"},
+                  tmp));
+    int status = -1;
+    REQUIRE(app.wait(kAppTimeoutMs, &status));
+    CHECK(status == 0);
+    const std::string e = slurp(err);
+    CHECK(contains(e, "cuetrack: picked --box 290,265,32,54"));
+    CHECK(contains(e, "target: the box dragged with --select"));
+    CHECK_FALSE(contains(e, "poor target"));
+    const std::vector<std::string> rows = lines(slurp(csv));
+    REQUIRE(rows.size() >= 2);
+    CHECK(contains(rows[1], ",tracking,290,265,32,54,"));  // the first frame is the picked one
+  }
 }
