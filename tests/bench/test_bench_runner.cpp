@@ -402,7 +402,11 @@ TEST_CASE("a tracker that cannot run is reported with its reason, in every repor
   const std::string text = textReport({a, b});
   CHECK(text.find("cuetrack 2.1 on square: cannot run: needs depth") != std::string::npos);
   CHECK(text.find("Over.") != std::string::npos);
+  // dist. says what it leaves out: the one tracker that ran had both boxes in every frame.
+  CHECK(text.find("dist. covers only frames where both boxes exist; frames covered: "
+                  "opencv-kcf 100%") != std::string::npos);
   const std::string md = markdownReport({a, b}, PaperReference::Table3);
+  CHECK(md.find("frames covered: opencv-kcf 100%") != std::string::npos);
   CHECK(md.find("- cuetrack 2.1 on square: cannot run: needs depth") != std::string::npos);
   CHECK(md.find("paper 2.1 | 73.47 | 96.77") != std::string::npos);
 
