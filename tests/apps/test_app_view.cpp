@@ -340,6 +340,26 @@ TEST_CASE("under Xvfb: --show draws the box the CSV reports; space pauses, q qui
   INFO("drawn " << drawn << " reported " << reported << " after " << rows << " rows");
   CHECK(shown);
   CHECK(app.running());  // paused, not ended
+
+  // r: drag a new box (here: around the box reported, 4 px larger); the run resumes and
+  // starts again on it, with full confidence.
+  const cv::Rect pick(reported.x - 4, reported.y - 4, reported.width + 8, reported.height + 8);
+  const std::string x0 = std::to_string(pick.x), y0 = std::to_string(pick.y);
+  const std::string x1 = std::to_string(pick.x + pick.width),
+                    y1 = std::to_string(pick.y + pick.height);
+  REQUIRE(xtool({xdotool, "key", "r"}, tmp));
+  REQUIRE(xtool(
+      {xdotool, "mousemove", "--window", id.c_str(), "--sync", x0.c_str(), y0.c_str(), "mousedown",
+       "1", "mousemove", "--window", id.c_str(), "--sync", x1.c_str(), y1.c_str(), "mouseup", "1"},
+      tmp));
+  REQUIRE(xtool({xdotool, "key", "Return"}, tmp));
+  char row[96];
+  std::snprintf(row, sizeof row, ",tracking,%d,%d,%d,%d,", pick.x, pick.y, pick.width, pick.height);
+  CHECK(waitFor([&] { return contains(slurp(csv), row); }, 60000));
+  char line[96];
+  std::snprintf(line, sizeof line, "re-selected --box %d,%d,%d,%d", pick.x, pick.y, pick.width,
+                pick.height);
+  CHECK(contains(slurp(err), line));
   REQUIRE(xtool({xdotool, "key", "q"}, tmp));
   int status = -1;
   REQUIRE(app.wait(kAppTimeoutMs, &status));
