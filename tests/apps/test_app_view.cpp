@@ -13,6 +13,7 @@
 #include <cstring>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
 #include <string>
 #include <vector>
 
@@ -277,6 +278,61 @@ TEST_CASE("--snapshot writes the first frame with a 40 px grid, at the frame's s
   const std::string e = slurp(err);
   CHECK(std::count(e.begin(), e.end(), '\n') == 1);
   CHECK(contains(slurp(err), "/nonexistent/x.png"));
+}
+
+TEST_CASE("--video writes every frame with its track drawn; OpenCV reads it back") {
+  TempDir tmp;
+  const std::string avi = tmp.file("run.avi"), csv = tmp.file("t.csv"), err = tmp.file("err.txt");
+  const int rc = run({CUETRACK_APP_BIN, "--source", "synth:occlusion", "--frames", "40", "--video",
+                      avi.c_str(), "--out", csv.c_str()},
+                     tmp.file("out.txt"), err);
+  if (rc == 3 && contains(slurp(err), "not built with OpenCV")) CUETRACK_SKIP("no OpenCV");
+  REQUIRE(rc == 0);
+  CHECK(contains(slurp(err), ("wrote " + avi + ": 40 frames").c_str()));
+  const std::vector<std::string> rows = lines(slurp(csv));
+  REQUIRE(rows.size() >= 41);
+  cv::VideoCapture video(avi);
+  REQUIRE(video.isOpened());
+  cv::Mat frame;
+  int n = 0;
+  while (video.read(frame)) {
+    // Colour and depth side by side, a text strip under them.
+    CHECK(frame.cols == 2 * 640);
+    CHECK(frame.rows > 480);
+    if (n == 30) {  // the box drawn is the box sent (JPEG: near-green, not exact)
+      int seq = 0, x = 0, y = 0, w = 0, h = 0;
+      unsigned long long t = 0;
+      char state[32];
+      REQUIRE(std::sscanf(rows[31].c_str(), "%d,%llu,%31[^,],%d,%d,%d,%d", &seq, &t, state, &x, &y,
+                          &w, &h) == 7);
+      REQUIRE(std::string(state) == "tracking");
+      int x0 = 9999, y0 = 9999, x1 = -1, y1 = -1;
+      for (int py = 0; py < 480; ++py)
+        for (int px = 0; px < 640; ++px) {
+          const cv::Vec3b p = frame.at<cv::Vec3b>(py, px);
+          if (p[1] > 170 && p[0] < 90 && p[2] < 90) {
+            x0 = std::min(x0, px);
+            y0 = std::min(y0, py);
+            x1 = std::max(x1, px);
+            y1 = std::max(y1, py);
+          }
+        }
+      INFO("drawn " << x0 << "," << y0 << " to " << x1 << "," << y1 << "; sent " << x << "," << y
+                    << "," << w << "," << h);
+      CHECK(std::abs(x0 - (x - 1)) <= 2);
+      CHECK(std::abs(y0 - (y - 1)) <= 2);
+      CHECK(std::abs(x1 - (x + w)) <= 2);
+      CHECK(std::abs(y1 - (y + h)) <= 2);
+    }
+    ++n;
+  }
+  CHECK(n == 40);
+
+  // A file that cannot be written: one line naming it, before any tracking, exit 3.
+  REQUIRE(run({CUETRACK_APP_BIN, "--frames", "5", "--video", "/nonexistent/x.avi"},
+              tmp.file("out.txt"), err) == 3);
+  const std::string e = slurp(err);
+  CHECK(e == "cuetrack: --video /nonexistent/x.avi: cannot write: No such file or directory\n");
 }
 
 TEST_CASE("--show and --select without a display fail in one line, exit 1") {

@@ -173,6 +173,12 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     return kExitOutput;
   }
 
+  static VideoOut video;
+  bool videoOk = opt.videoPath != nullptr;
+  if (opt.videoPath && !video.open(opt.videoPath, source->nominalFps(), err, sizeof err)) {
+    reporter.report(err);
+    return kExitOutput;
+  }
   PipelineOptions po;
   po.maxFrames = opt.frames;
   po.hasBox = opt.hasBox;
@@ -239,13 +245,19 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     if (pipeline.frames() == before) continue;  // no frame this step
     const ctp_track_t& t = pipeline.lastTrack();
     summary.add(t, slot.hasGroundTruth ? &slot.groundTruth : nullptr);
-    if (!opt.show) continue;
+    if (!opt.show && !videoOk) continue;
     ViewTrack vt;
     vt.frameIndex = static_cast<uint32_t>(slot.index);
     vt.state = t.state;
     vt.box = Box{static_cast<float>(t.box_px[0]), static_cast<float>(t.box_px[1]),
                  static_cast<float>(t.box_px[2]), static_cast<float>(t.box_px[3])};
     vt.confidence = static_cast<float>(t.confidence) / 65535.f;
+    if (videoOk && !video.write(slot.frame(), vt, err, sizeof err)) {
+      // Like any output: said once, tracking goes on, the exit code tells.
+      reporter.report(err);
+      videoOk = false;
+    }
+    if (!opt.show) continue;
     view.push(slot.frame(), vt);
     view.waitWhilePaused(&platform::stopRequested);
     Box picked{};
@@ -266,6 +278,15 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   const uint64_t runUs = clock.nowUs() - runStartUs;
   pipeline.finish();
   view.close();
+  if (opt.videoPath && videoOk) {
+    if (video.close(err, sizeof err)) {
+      std::snprintf(err, sizeof err, "wrote %s: %u frames", opt.videoPath,
+                    static_cast<unsigned>(video.frames()));
+    } else {
+      videoOk = false;
+    }
+    reporter.report(err);
+  }
 
   if (link && !link->drain(1000))
     reporter.report("serial: could not send the last messages within 1 s");
@@ -305,7 +326,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     case StepResult::BoxRejected:
       return kExitBoxRejected;
     default:
-      return pipeline.outputFailed() ? kExitOutput : kExitOk;
+      return pipeline.outputFailed() || (opt.videoPath && !videoOk) ? kExitOutput : kExitOk;
   }
 }
 

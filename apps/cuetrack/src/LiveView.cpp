@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -14,6 +15,8 @@
 #include <opencv2/highgui.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -73,6 +76,32 @@ cv::Rect selectRoi(const char* window, const cv::Mat& image) {
 
 cv::Rect toRect(const Box& b) {
   return cv::Rect(cvRound(b.x), cvRound(b.y), cvRound(b.w), cvRound(b.h));
+}
+
+// The frame with the track drawn, the depth colour-mapped beside it (when given), and two
+// lines of text in a strip under them: the window's and the video's picture.
+cv::Mat overlay(const cv::Mat& bgr, const cv::Mat& depth16, const ViewTrack& track,
+                const char* line1, const char* line2) {
+  cv::Mat colour = bgr.clone();
+  const cv::Scalar c = stateColour(track.state);
+  const bool hasBox = track.state != CTP_STATE_IDLE && track.box.w > 0.f;
+  if (hasBox) cv::rectangle(colour, toRect(track.box), c, 2);
+  cv::Mat image = colour;
+  if (!depth16.empty()) {
+    cv::Mat d8, depthColour;
+    depth16.convertTo(d8, CV_8U, 255.0 / kDepthFarMm);
+    cv::applyColorMap(d8, depthColour, cv::COLORMAP_JET);
+    depthColour.setTo(cv::Scalar(0, 0, 0), depth16 == 0);  // no measurement: black
+    if (hasBox) cv::rectangle(depthColour, toRect(track.box), cv::Scalar(255, 255, 255), 2);
+    cv::hconcat(colour, depthColour, image);
+  }
+  cv::Mat canvas(image.rows + kStripPx, image.cols, CV_8UC3, cv::Scalar(32, 32, 32));
+  image.copyTo(canvas(cv::Rect(0, 0, image.cols, image.rows)));
+  cv::putText(canvas, line1, {6, image.rows + 17}, cv::FONT_HERSHEY_SIMPLEX, 0.5, c, 1,
+              cv::LINE_AA);
+  cv::putText(canvas, line2, {6, image.rows + 37}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+              cv::Scalar(200, 200, 200), 1, cv::LINE_AA);
+  return canvas;
 }
 
 }  // namespace
@@ -192,20 +221,9 @@ struct LiveView::Impl {
   cv::Mat render(const ViewFrame& f) {
     const RgbView view{f.rgb.data(), f.width, f.height, f.width};
     lastBgr = toBgr(view);
-    cv::Mat colour = lastBgr.clone();
-    const cv::Scalar c = stateColour(f.track.state);
-    const bool hasBox = f.track.state != CTP_STATE_IDLE && f.track.box.w > 0.f;
-    if (hasBox) cv::rectangle(colour, toRect(f.track.box), c, 2);
-    cv::Mat image = colour;
-    if (!f.depthMm.empty()) {
-      const cv::Mat d(f.height, f.width, CV_16UC1, const_cast<uint16_t*>(f.depthMm.data()));
-      cv::Mat d8, depthColour;
-      d.convertTo(d8, CV_8U, 255.0 / kDepthFarMm);
-      cv::applyColorMap(d8, depthColour, cv::COLORMAP_JET);
-      depthColour.setTo(cv::Scalar(0, 0, 0), d == 0);  // no measurement: black
-      if (hasBox) cv::rectangle(depthColour, toRect(f.track.box), cv::Scalar(255, 255, 255), 2);
-      cv::hconcat(colour, depthColour, image);
-    }
+    cv::Mat depth;
+    if (!f.depthMm.empty())
+      depth = cv::Mat(f.height, f.width, CV_16UC1, const_cast<uint16_t*>(f.depthMm.data()));
     // fps of the tracker: frames it did between two frames the window showed.
     if (haveLast && f.track.frameIndex > lastIndex) {
       const double dt = std::chrono::duration<double>(f.pushedAt - lastAt).count();
@@ -217,22 +235,15 @@ struct LiveView::Impl {
     haveLast = true;
     lastIndex = f.track.frameIndex;
     lastAt = f.pushedAt;
-
-    cv::Mat canvas(image.rows + kStripPx, image.cols, CV_8UC3, cv::Scalar(32, 32, 32));
-    image.copyTo(canvas(cv::Rect(0, 0, image.cols, image.rows)));
-    char line[256];
-    std::snprintf(line, sizeof line,
+    char line1[256], line2[160];
+    std::snprintf(line1, sizeof line1,
                   "frame %u  %s  confidence %.2f  %.1f fps  display dropped %llu",
                   f.track.frameIndex, ctp_state_name(f.track.state), f.track.confidence, fps,
                   static_cast<unsigned long long>(mailbox.dropped()));
-    cv::putText(canvas, line, {6, image.rows + 17}, cv::FONT_HERSHEY_SIMPLEX, 0.5, c, 1,
-                cv::LINE_AA);
-    std::snprintf(line, sizeof line, "%sspace pause  r re-select  q quit%s",
+    std::snprintf(line2, sizeof line2, "%sspace pause  r re-select  q quit%s",
                   isPaused() ? "PAUSED  " : "",
-                  f.depthMm.empty() ? "" : "   depth: near blue, far red, none black");
-    cv::putText(canvas, line, {6, image.rows + 37}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
-                cv::Scalar(200, 200, 200), 1, cv::LINE_AA);
-    return canvas;
+                  depth.empty() ? "" : "   depth: near blue, far red, none black");
+    return overlay(lastBgr, depth, f.track, line1, line2);
   }
 
   void servePick() {
@@ -375,6 +386,96 @@ void LiveView::close() {
   _impl->closing = true;
   _impl->mailbox.close();
   _impl->thread.join();
+}
+
+struct VideoOut::Impl {
+  cv::VideoWriter writer;
+  std::string path;
+  int width = 0, height = 0;  // of the frames (the video is taller: the text strip)
+  bool depth = false;
+  double fps = 30.0;
+};
+
+VideoOut::VideoOut() : _impl(std::make_unique<Impl>()) {}
+VideoOut::~VideoOut() = default;
+
+bool VideoOut::open(const char* path, double fps, char* err, size_t errLen) {
+  const size_t n = std::strlen(path);
+  if (n < 5 || std::strcmp(path + n - 4, ".avi") != 0) {
+    std::snprintf(err, errLen, "--video %s: expected a .avi file (Motion JPEG)", path);
+    return false;
+  }
+  // Found out now, before the run: the writer itself only says "cannot open" (after
+  // trying GStreamer), and opens on the first frame, whose size it needs.
+  FILE* f = std::fopen(path, "wb");
+  if (!f) {
+    std::snprintf(err, errLen, "--video %s: cannot write: %s", path, std::strerror(errno));
+    return false;
+  }
+  std::fclose(f);
+  _impl->path = path;
+  _impl->fps = fps > 0.0 ? fps : 30.0;
+  return true;
+}
+
+bool VideoOut::write(const Frame& frame, const ViewTrack& track, char* err, size_t errLen) {
+  Impl& v = *_impl;
+  const cv::Mat bgr = toBgr(frame.rgb);
+  cv::Mat depth;
+  if (frame.hasDepth() && frame.depthMm.width == frame.rgb.width &&
+      frame.depthMm.height == frame.rgb.height) {
+    depth = cv::Mat(frame.depthMm.height, frame.depthMm.width, CV_16UC1,
+                    const_cast<uint16_t*>(frame.depthMm.data),
+                    static_cast<size_t>(frame.depthMm.stride) * sizeof(uint16_t));
+  }
+  if (!v.writer.isOpened()) {
+    v.width = frame.rgb.width;
+    v.height = frame.rgb.height;
+    v.depth = !depth.empty();
+    const cv::Size size((v.depth ? 2 : 1) * v.width, v.height + kStripPx);
+    // OpenCV's own Motion JPEG writer: no GStreamer or FFmpeg needed.
+    if (!v.writer.open(v.path, cv::CAP_OPENCV_MJPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
+                       v.fps, size)) {
+      std::snprintf(err, errLen, "--video %s: cannot write (folder missing or not writable)",
+                    v.path.c_str());
+      return false;
+    }
+  }
+  if (frame.rgb.width != v.width || frame.rgb.height != v.height) {
+    std::snprintf(err, errLen, "--video %s: frame %u is %dx%d, the video is %dx%d", v.path.c_str(),
+                  track.frameIndex, frame.rgb.width, frame.rgb.height, v.width, v.height);
+    return false;
+  }
+  // A frame without depth in a video with depth (or the reverse) keeps the video's layout.
+  if (v.depth && depth.empty()) depth = cv::Mat(v.height, v.width, CV_16UC1, cv::Scalar(0));
+  if (!v.depth) depth = cv::Mat();
+  char line1[160];
+  std::snprintf(line1, sizeof line1, "frame %u  %s  confidence %.2f", track.frameIndex,
+                ctp_state_name(track.state), track.confidence);
+  v.writer.write(
+      overlay(bgr, depth, track, line1,
+              v.depth ? "cuetrack   depth: near blue, far red, none black" : "cuetrack"));
+  ++_frames;
+  return true;
+}
+
+bool VideoOut::close(char* err, size_t errLen) {
+  if (!_impl->writer.isOpened()) return true;
+  _impl->writer.release();
+  // VideoWriter reports no write errors (a full disk): the file must at least be there.
+  FILE* f = std::fopen(_impl->path.c_str(), "rb");
+  long size = 0;
+  if (f) {
+    std::fseek(f, 0, SEEK_END);
+    size = std::ftell(f);
+    std::fclose(f);
+  }
+  if (size <= 0) {
+    std::snprintf(err, errLen, "--video %s: the file is empty or missing after writing",
+                  _impl->path.c_str());
+    return false;
+  }
+  return true;
 }
 
 }  // namespace cuetrack::app

@@ -74,6 +74,8 @@ const char* usageText() {
          "see it (host builds with OpenCV, needs a display):\n"
          "  --show             live window: box, state, confidence, fps, depth beside it;\n"
          "                     space pauses, r re-selects the target, q or Esc quits\n"
+         "  --video FILE.avi   write every frame with its box, state, confidence and frame\n"
+         "                     number drawn (Motion JPEG; no display needed)\n"
          "outputs (stdout gets one line per frame when neither --serial nor --out is given,\n"
          "and stdout is not a terminal: there, only with --stdout):\n"
          "  --serial DEV       stream binary track messages, accept commands (8N1 raw)\n"
@@ -143,6 +145,9 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       out->show = true;
     } else if (std::strcmp(a, "--select") == 0) {
       out->select = true;
+    } else if (std::strcmp(a, "--video") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      out->videoPath = v;
     } else if (std::strcmp(a, "--snapshot") == 0) {
       if (!value(&v)) return ParseResult::Error;
       out->snapshotPath = v;
@@ -272,8 +277,9 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
     std::snprintf(err, errLen, "--select and --box: one target at a time");
     return ParseResult::Error;
   }
-  if (out->snapshotPath && (out->show || out->select)) {
-    std::snprintf(err, errLen, "--snapshot saves a frame and exits: not with --show or --select");
+  if (out->snapshotPath && (out->show || out->select || out->videoPath)) {
+    std::snprintf(err, errLen,
+                  "--snapshot saves a frame and exits: not with --show, --select or --video");
     return ParseResult::Error;
   }
   // A setting that would do nothing is refused rather than ignored.

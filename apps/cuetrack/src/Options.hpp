@@ -45,6 +45,7 @@ struct AppOptions {
   bool show = false;                        // --show: live window (View.hpp, host only)
   bool select = false;                      // --select: drag the target box on frame 1
   const char* snapshotPath = nullptr;       // --snapshot FILE.png: frame 1 + grid, then exit
+  const char* videoPath = nullptr;          // --video FILE.avi: every frame with its track
 };
 
 enum class ParseResult : uint8_t { Run, Help, Error };

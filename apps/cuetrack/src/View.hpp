@@ -33,6 +33,26 @@ struct ViewTrack {
   float confidence = 0.f;
 };
 
+// --video FILE.avi: every frame with its track drawn (Motion JPEG), written on the caller's
+// thread, so it costs the tracker's loop an encode per frame (a few ms).
+class VideoOut {
+ public:
+  VideoOut();
+  ~VideoOut();
+  VideoOut(const VideoOut&) = delete;
+  VideoOut& operator=(const VideoOut&) = delete;
+
+  bool open(const char* path, double fps, char* err, size_t errLen);  // fps 0: 30
+  bool write(const Frame& frame, const ViewTrack& track, char* err, size_t errLen);
+  bool close(char* err, size_t errLen);  // false: the file is missing or empty
+  uint32_t frames() const { return _frames; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> _impl;
+  uint32_t _frames = 0;
+};
+
 // The live window: its own thread renders the latest pushed frame; push() only copies the
 // pixels into a mailbox (LatestMailbox) and never waits for the window.
 class LiveView {

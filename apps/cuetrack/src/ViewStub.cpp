@@ -25,6 +25,19 @@ bool pickBox(const Frame&, Box*, char* err, size_t errLen) {
 bool writeSnapshot(const Frame&, const char*, char* err, size_t errLen) {
   return fail(err, errLen);
 }
+struct VideoOut::Impl {};
+VideoOut::VideoOut() = default;
+VideoOut::~VideoOut() = default;
+bool VideoOut::open(const char*, double, char* err, size_t errLen) {
+  return fail(err, errLen);
+}
+bool VideoOut::write(const Frame&, const ViewTrack&, char* err, size_t errLen) {
+  return fail(err, errLen);
+}
+bool VideoOut::close(char*, size_t) {
+  return true;
+}
+
 LiveView::LiveView() = default;
 LiveView::~LiveView() = default;
 bool LiveView::start(char* err, size_t errLen) {
