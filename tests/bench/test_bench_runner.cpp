@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
 #include <sstream>
 
 #include "Outputs.hpp"
@@ -452,6 +453,22 @@ TEST_CASE("output files: BoBoT result format, per-frame CSV, overlap plot") {
 
   CHECK_FALSE(writeOverlapPlot("/nonexistent-dir/p.png", {e}, 0, &err));
   CHECK(err.find("/nonexistent-dir/p.png") == 0);
+
+  // The overlay video: every frame, the frame's width, a legend under it (frame number +
+  // one row per entry); the entry's box drawn in its colour at its first-run box.
+  REQUIRE(writeOverlayVideo("bench_runner_out/square.avi", seq, {e}, 0, 30.0, &err));
+  cv::VideoCapture video("bench_runner_out/square.avi");
+  REQUIRE(video.isOpened());
+  cv::Mat frame;
+  int n = 0;
+  while (video.read(frame)) {
+    CHECK(frame.cols == 160);
+    CHECK(frame.rows > 120 + 2 * 16);
+    ++n;
+  }
+  CHECK(n == static_cast<int>(seq.frames.size()));
+  CHECK_FALSE(writeOverlayVideo("/nonexistent-dir/v.avi", seq, {e}, 0, 30.0, &err));
+  CHECK(err.find("/nonexistent-dir/v.avi: cannot write") == 0);
 }
 
 TEST_CASE("OpenCV KCF follows a clearly visible moving target on the same frames") {
