@@ -350,7 +350,18 @@ TEST_CASE("--show and --select without a display fail in one line, exit 1") {
     CHECK((contains(e, "DISPLAY") || contains(e, "not built with OpenCV")));
     CHECK(slurp(out).empty());
   }
-  if (!saved.empty()) setenv("DISPLAY", saved.c_str(), 1);
+  // A display named but not there: Qt would abort the process; we say so in one line.
+  setenv("DISPLAY", ":4093", 1);
+  CHECK(run({CUETRACK_APP_BIN, "--source", "synth:moving", "--frames", "5", "--show"}, out, err) ==
+        1);
+  const std::string e = slurp(err);
+  CHECK(std::count(e.begin(), e.end(), '\n') == 1);
+  CHECK((contains(e, "cannot connect to display :4093") || contains(e, "not built with OpenCV")));
+  if (saved.empty()) {
+    unsetenv("DISPLAY");
+  } else {
+    setenv("DISPLAY", saved.c_str(), 1);
+  }
 }
 
 TEST_CASE("under Xvfb: --show draws the box the CSV reports; space pauses, q quits") {
