@@ -121,7 +121,11 @@ bool kinectSupported() {
 void describeGroundTruth(const char* spec, char* out, size_t outLen) {
   if (!spec || std::strncmp(spec, "kinect", 6) == 0 || std::strncmp(spec, "synth", 5) == 0 ||
       std::strncmp(spec, "pan:", 4) == 0) {
-    std::snprintf(out, outLen, "%s ground truth", spec ? spec : kDefaultScene);
+    if (spec) {
+      std::snprintf(out, outLen, "%s ground truth", spec);
+    } else {
+      std::snprintf(out, outLen, "synth:%s ground truth", kDefaultScene);
+    }
     return;
   }
   const size_t n = std::strlen(spec);
