@@ -1,72 +1,68 @@
 #!/usr/bin/env bash
-# Regenerates the cuetrack-bench block of docs/benchmarks.md (and docs/img/bench-*.png)
-# with one command: builds cuetrack-bench (host preset), then runs the paper's protocol
-#   - BoBoT C, E, H (../shared/data/bobot): cuetrack 1.1-1.4 and best (2D there), 10 runs,
-#     beside the paper's Table 1, and every OpenCV peer on the same frames;
-#   - synthetic RGB-D scenes (the cuetrack-synth generator, in process): cuetrack
-#     2.1-2.5 and best, beside the paper's Table 3 (on its own, other sequences),
-#     and every OpenCV peer on the same frames;
-#   - real Kinect depth (../shared/data/kinect-stills): ten targets of the NYU and TUM
-#     stills, each panned by the pan: source, cuetrack 2.1, 2.4, 2.5, best and best
-#     with each switch off, and KCF / CSRT;
-#   - BoBoT again as a slower camera (every 2nd frame) and a lossy link (10% of the
-#     frames dropped): best, best-nofastmotion, 1.1, KCF and CSRT; the synthetic
-#     scenes at 10 fps (every 3rd frame): best, best-nofastmotion, 2.1, KCF and CSRT;
-#   - BoBoT from other starts and backwards (OTB's temporal robustness, --from / --to /
-#     --reverse): 1.1, best, KCF, CSRT and MedianFlow.
-# Environment: CUETRACK_SHARED_DIR (default ../shared), BUILD (build tree, default
-# build/benchmarks), RUNS (BoBoT runs, 10), SYN_RUNS (synthetic runs, 5),
-# PEER_RUNS (OpenCV peer runs, 1: TLD, CSRT and MIL take 100-200 ms a frame), FRAMES (cut every sequence, default whole),
-# DRY=1 (print the block instead of writing docs/benchmarks.md).
+# Regenerates docs/benchmarks.md, the current state, at one commit, with one command.
+# Every table there is printed with the command that made it. Sections:
+#   Development set   scripts/devset.sh best 1.1 (../shared/data/otb + BoBoT + synthetic
+#                     RGB-D scenes, 5 seeds, beside CSRT, KCF and MedianFlow), with the
+#                     success and precision plots;
+#   BoBoT             the paper's protocol and Table 1: 1.1-1.4 and best, 10 seeds;
+#   Synthetic RGB-D   2.1-2.5 and best on the cuetrack-synth scenes, beside Table 3;
+#   Real Kinect depth ten real stills made into panning sequences (pan:);
+#   Speed and memory  cuetrack-trackspeed per preset (host), the integral images
+#                     (cuetrack-microbench), and on aarch64 exact instructions per
+#                     frame (qemu-icount) when an aarch64 build exists;
+#   On-board path     on aarch64: fakenect replay through the Kinect driver, the
+#                     tracker and the serial encoder, against the tracker alone.
+# What was tried and dropped is in docs/experiments.md, not here.
+# Environment: CUETRACK_SHARED_DIR (default ../shared), BUILD (host build tree, default
+# build/host), ARM (aarch64 build tree, default build/aarch64), RUNS (BoBoT, 10),
+# SYN_RUNS (synthetic and panned, 5), DRY=1 (print instead of writing the doc).
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
 SHARED=${CUETRACK_SHARED_DIR:-$ROOT/../shared}
 BOBOT="$SHARED/data/bobot"
-BUILD=${BUILD:-build/benchmarks}
+BUILD=${BUILD:-build/host}
+ARM=${ARM:-build/aarch64}
 RUNS=${RUNS:-10}
 SYN_RUNS=${SYN_RUNS:-5}
-PEER_RUNS=${PEER_RUNS:-1}
-FRAMES=${FRAMES:-}
-SCENES=(twin-crossing occlusion untextured lighting approach turn)
 DOC=docs/benchmarks.md
 IMG=docs/img
 OUT=$BUILD/benchmarks-out
+CACHE=$BUILD/devset/peer-cache  # shared with scripts/devset.sh
+SCENES=(moving twin-crossing occlusion untextured lighting approach box turn)
+PEERS=opencv-csrt,opencv-kcf,opencv-medianflow
 
 start=$(date +%s)
 stamp() { echo "== [$(( $(date +%s) - start ))s] $*" >&2; }
-
-# What the binary is built from, taken before the build (others may commit meanwhile).
 commit=$(git rev-parse --short HEAD)
-dirty=$(git status --porcelain -- core apps drivers platform | grep -q . && echo " (plus uncommitted changes in the working tree)" || true)
+dirty=$(git status --porcelain -- core apps drivers platform | grep -q . && echo " plus uncommitted changes" || true)
 
-stamp "build cuetrack-bench in $BUILD"
-mkdir -p "$BUILD"
-cmake --preset host -B "$BUILD" -DCUETRACK_BUILD_TESTS=OFF > "$BUILD/benchmarks-build.log" 2>&1 &&
-  cmake --build "$BUILD" --target cuetrack-bench -j2 >> "$BUILD/benchmarks-build.log" 2>&1 ||
-  { tail -30 "$BUILD/benchmarks-build.log" >&2; echo "benchmarks.sh: build failed" >&2; exit 1; }
+stamp "build the host tools in $BUILD"
+{ [ -f "$BUILD/CMakeCache.txt" ] || cmake --preset host -B "$BUILD" >/dev/null; } &&
+  cmake --build "$BUILD" -j"$(nproc)" --target cuetrack-bench cuetrack-trackspeed \
+    cuetrack-microbench cuetrack-synth >/dev/null ||
+  { echo "benchmarks.sh: the host build failed (cmake --build $BUILD)" >&2; exit 1; }
 BENCH="$BUILD/bin/cuetrack-bench"
-
 rm -rf "$OUT"
 mkdir -p "$OUT" "$IMG"
-frames_opt=()
-[ -n "$FRAMES" ] && frames_opt=(--frames "$FRAMES")
 status=0
+show() { local s="$*"; s=${s//$ROOT\//}; s=${s//$SHARED/..\/shared}; echo "$s"; }
+code() { echo '```'; show "$@"; echo '```'; }
 
-# The commands as the doc shows them (paths relative to the repository).
-bobot_seqs=("$BOBOT/Vid_C_juice.avi" "$BOBOT/Vid_E_person_partially_occluded.avi"
-            "$BOBOT/Vid_H_panda.avi")
-bobot_cmd=("$BENCH" "${bobot_seqs[@]}" --tracker cuetrack,opencv-all --config 1.1,1.2,1.3,1.4,best,best-noanchorcloud
-           --runs "$RUNS" --peer-runs "$PEER_RUNS" "${frames_opt[@]}" --paper table1
-           --markdown "$OUT/bobot.md" --json "$OUT/bobot.json" --plots "$OUT/plots"
-           --csv "$OUT/csv" --results "$OUT/results")
+# ---- runs ------------------------------------------------------------------------
+have_shared=0
+[ -d "$SHARED/data/otb" ] && [ -d "$BOBOT" ] && have_shared=1
+if [ $have_shared = 1 ]; then
+  stamp "development set"
+  OUT="$OUT/devset-out" PEER_CACHE="$CACHE" BUILD="$BUILD" bash scripts/devset.sh best 1.1 > "$OUT/devset.txt" || status=1
+fi
+bobot_seqs=("$BOBOT/Vid_C_juice.avi" "$BOBOT/Vid_E_person_partially_occluded.avi" "$BOBOT/Vid_H_panda.avi")
+bobot_cmd=("$BENCH" --quiet "${bobot_seqs[@]}" --tracker "cuetrack,$PEERS" --config 1.1,1.2,1.3,1.4,best
+           --runs "$RUNS" --peer-runs 1 --peer-cache "$CACHE" --paper table1 --markdown "$OUT/bobot.md")
 syn_seqs=()
 for s in "${SCENES[@]}"; do syn_seqs+=("synth:$s"); done
-syn_cmd=("$BENCH" "${syn_seqs[@]}" --tracker cuetrack,opencv-all
-         --config 2.1,2.2,2.3,2.4,2.5,best,best-norefine --runs "$SYN_RUNS" --peer-runs "$PEER_RUNS"
-         "${frames_opt[@]}" --paper table3 --markdown "$OUT/synth.md" --json "$OUT/synth.json"
-         --plots "$OUT/plots" --csv "$OUT/csv")
-# Real depth: the stills' targets (box in px) and intrinsics, as the data README gives them.
+syn_cmd=("$BENCH" --quiet "${syn_seqs[@]}" --tracker "cuetrack,$PEERS" --config 2.1,2.2,2.3,2.4,2.5,best
+         --runs "$SYN_RUNS" --peer-runs 1 --peer-cache "$CACHE" --paper table3 --markdown "$OUT/synth.md")
 STILLS="$SHARED/data/kinect-stills"
 NYU="$STILLS/nyu-joinmap"
 TUM="$STILLS/tum-fr1"
@@ -82,221 +78,199 @@ pan_seqs=("pan:$NYU/color/5.png,$NYU/depth/5.pgm,302,102,186,240,$nyu_k"
           "pan:$TUM/1.png,$TUM/1_depth.png,418,128,22,43,$tum_k"
           "pan:$TUM/1.png,$TUM/1_depth.png,202,257,184,50,$tum_k"
           "pan:$TUM/1.png,$TUM/1_depth.png,98,171,50,68,$tum_k")
-pan_cmd=("$BENCH" "${pan_seqs[@]}" --tracker cuetrack,opencv-kcf,opencv-csrt
-         --config 2.1,2.4,2.5,best,best-fixedsize,best-nolost,best-nomodeguard --runs "$SYN_RUNS"
-         --peer-runs "$PEER_RUNS" "${frames_opt[@]}" --markdown "$OUT/pan.md"
-         --json "$OUT/pan.json" --csv "$OUT/csv")
-slow_cmd=("$BENCH" "${bobot_seqs[@]}" --tracker cuetrack,opencv-kcf,opencv-csrt
-          --config best,best-nofastmotion,1.1 --runs "$RUNS" --peer-runs "$PEER_RUNS"
-          "${frames_opt[@]}" --stride 2 --markdown "$OUT/slow.md" --json "$OUT/slow.json")
-lossy_cmd=("$BENCH" "${bobot_seqs[@]}" --tracker cuetrack,opencv-kcf,opencv-csrt
-           --config best,best-nofastmotion,1.1 --runs "$RUNS" --peer-runs "$PEER_RUNS"
-           "${frames_opt[@]}" --drop-frames 10 --markdown "$OUT/lossy.md" --json "$OUT/lossy.json")
-slowsyn_cmd=("$BENCH" "${syn_seqs[@]}" --tracker cuetrack,opencv-kcf,opencv-csrt
-             --config best,best-nofastmotion,2.1 --runs "$SYN_RUNS" --peer-runs "$PEER_RUNS"
-             "${frames_opt[@]}" --stride 3 --markdown "$OUT/slowsyn.md" --json "$OUT/slowsyn.json")
-# Temporal robustness: each video from frames 0, 100, 200 forward and from its end, 200,
-# 100 backward, one bench run per video (its table's Averages are over the six starts).
-tre_cmd() {  # sets the array TRE for the video $1
-  local f=$1
-  TRE=("$BENCH" "$f" --from 100 "$f" --from 200 "$f" --reverse "$f" --to 200 --reverse "$f"
-       --to 100 --reverse "$f" --tracker cuetrack,opencv-kcf,opencv-csrt,opencv-medianflow
-       --config 1.1,best --runs "$RUNS" --peer-runs "$PEER_RUNS" "${frames_opt[@]}")
-}
-show() { local s="$*"; s=${s//$ROOT\//}; s=${s//$SHARED/..\/shared}; echo "$s"; }
-
+pan_cmd=("$BENCH" --quiet "${pan_seqs[@]}" --tracker cuetrack,opencv-csrt,opencv-kcf
+         --config 2.1,2.4,2.5,best --runs "$SYN_RUNS" --peer-runs 1 --peer-cache "$CACHE"
+         --markdown "$OUT/pan.md")
 if [ -d "$BOBOT" ]; then
-  stamp "BoBoT: ${bobot_cmd[*]}"
-  "${bobot_cmd[@]}" > "$OUT/bobot.txt" || status=1
-  stamp "BoBoT, every 2nd frame: ${slow_cmd[*]}"
-  "${slow_cmd[@]}" > "$OUT/slow.txt" || status=1
-  stamp "BoBoT, 10% dropped: ${lossy_cmd[*]}"
-  "${lossy_cmd[@]}" > "$OUT/lossy.txt" || status=1
-  for f in "${bobot_seqs[@]}"; do
-    [ -n "$FRAMES" ] && break  # FRAMES would cut the videos before their later starts
-    n=$(basename "$f" .avi)
-    tre_cmd "$f"
-    stamp "BoBoT from other starts: ${TRE[*]}"
-    "${TRE[@]}" --markdown "$OUT/tre-$n.md" --json "$OUT/tre-$n.json" > "$OUT/tre-$n.txt" || status=1
-  done
-else
-  echo "benchmarks.sh: $BOBOT not found: the BoBoT part is left out" >&2
-  status=1
+  stamp "BoBoT"
+  "${bobot_cmd[@]}" > /dev/null || status=1
 fi
-stamp "synthetic: ${syn_cmd[*]}"
-"${syn_cmd[@]}" > "$OUT/synth.txt" || status=1
-stamp "synthetic, every 3rd frame: ${slowsyn_cmd[*]}"
-"${slowsyn_cmd[@]}" > "$OUT/slowsyn.txt" || status=1
+stamp "synthetic RGB-D"
+"${syn_cmd[@]}" > /dev/null || status=1
 if [ -d "$NYU" ] && [ -d "$TUM" ]; then
-  stamp "real depth: ${pan_cmd[*]}"
-  "${pan_cmd[@]}" > "$OUT/pan.txt" || status=1
-else
-  echo "benchmarks.sh: $STILLS not found: the real-depth part is left out" >&2
-  status=1
+  stamp "panned real stills"
+  "${pan_cmd[@]}" > /dev/null || status=1
+fi
+
+stamp "speed (host)"
+speed_rows=""
+size_line=""
+for p in 1.1 2.1 best; do
+  line=$("$BUILD/bin/cuetrack-trackspeed" --preset "$p" --frames 150 | tail -1)
+  med=$(sed -n 's/^median update \([0-9]*\) us.*/\1/p' <<<"$line")
+  stages=$(sed -n 's/.*(\(.*\)).*/\1/p' <<<"$line")
+  speed_rows+="| $p | $med | $stages |"$'\n'
+  size_line=$(sed -n 's/.*tracker sizeof \([0-9]*\) B.*/\1/p' <<<"$line")
+done
+micro=$("$BUILD/bin/cuetrack-microbench" --runs 200 2>&1 || true)
+
+# aarch64: exact instructions per frame under qemu-user with the icount plugin.
+icount_tools=${CUETRACK_ICOUNT_DIR:-$SHARED/tools/qemu-icount}
+plugin="$ROOT/build/icount/libicount.so"
+arm_rows="" path_rows=""
+if [ -x "$ARM/bin/cuetrack-trackspeed" ] && [ -x "$ARM/bin/cuetrack" ] && [ -d "$icount_tools" ] &&
+   command -v qemu-aarch64 >/dev/null; then
+  [ -f "$plugin" ] || sh "$icount_tools/build.sh" "$(dirname "$plugin")" >/dev/null
+  icount() {  # icount [ENV=V ...] -- PROGRAM ARGS -> instructions
+    local log envs=(); log=$(mktemp)
+    while [ "$1" != -- ]; do envs+=(-E "$1"); shift; done; shift
+    qemu-aarch64 -L /usr/aarch64-linux-gnu "${envs[@]}" -plugin "$plugin" -d plugin -D "$log" "$@" >/dev/null 2>&1 || true
+    sed -n 's/^insns: //p' "$log"; rm -f "$log"
+  }
+  lib=LD_LIBRARY_PATH=/usr/aarch64-linux-gnu/lib:/usr/lib/aarch64-linux-gnu
+  stamp "aarch64 instructions (qemu-icount)"
+  for p in 1.1 2.1 best; do
+    a=$(icount "$lib" -- "$ARM/bin/cuetrack-trackspeed" --preset "$p" --frames 50 --icount)
+    b=$(icount "$lib" -- "$ARM/bin/cuetrack-trackspeed" --preset "$p" --frames 0 --icount)
+    arm_rows+="| $p | $(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.2f M", (a - b) / 50 / 1e6 }') |"$'\n'
+  done
+  # The whole on-board path: libfreenect (fakenect replaying a recording, as the Kinect
+  # would deliver it) -> our Kinect driver's conversion -> the tracker -> the serial
+  # encoder writing to a pseudo-terminal. (60 frames - 20 frames) / 40.
+  rec="$OUT/rec-moving"
+  "$BUILD/bin/cuetrack-synth" --scene moving --frames 60 --out "$rec" >/dev/null
+  if command -v socat >/dev/null && [ -f /usr/lib/aarch64-linux-gnu/fakenect/libfreenect.so.0.5 ]; then
+    socat PTY,raw,echo=0,link="$OUT/ttyA" PTY,raw,echo=0,link="$OUT/ttyB" & spid=$!
+    for _ in $(seq 50); do [ -e "$OUT/ttyB" ] && break; sleep 0.1; done
+    cat "$OUT/ttyB" > /dev/null & cpid=$!
+    flib="LD_LIBRARY_PATH=/usr/lib/aarch64-linux-gnu/fakenect:/usr/aarch64-linux-gnu/lib:/usr/lib/aarch64-linux-gnu"
+    for p in 2.1 best; do
+      a=$(icount "$flib" "FAKENECT_PATH=$rec" -- "$ARM/bin/cuetrack" --source kinect --config "$p" --frames 60 --serial "$OUT/ttyA" --quiet)
+      b=$(icount "$flib" "FAKENECT_PATH=$rec" -- "$ARM/bin/cuetrack" --source kinect --config "$p" --frames 20 --serial "$OUT/ttyA" --quiet)
+      t=$(icount "$lib" -- "$ARM/bin/cuetrack-trackspeed" --preset "$p" --frames 60 --icount)
+      u=$(icount "$lib" -- "$ARM/bin/cuetrack-trackspeed" --preset "$p" --frames 20 --icount)
+      path_rows+="| $p | $(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.2f M", (a - b) / 40 / 1e6 }') | $(awk -v a="$t" -v b="$u" 'BEGIN { printf "%.2f M", (a - b) / 40 / 1e6 }') |"$'\n'
+    done
+    kill "$cpid" "$spid" 2>/dev/null || true
+  fi
 fi
 stamp "runs done (exit status $status)"
 
-# Plots into docs/img (small PNGs, referenced from the doc); DRY=1 leaves docs/ alone.
-if [ "${DRY:-0}" != 1 ]; then
-  rm -f "$IMG"/bench-*.png
-  for p in "$OUT"/plots/*.png; do
-    [ -e "$p" ] && cp "$p" "$IMG/bench-$(basename "$p" .overlap.png).png"
-  done
+# ---- the page --------------------------------------------------------------------
+if [ "${DRY:-0}" != 1 ] && [ -f "$OUT/devset-out/plots/success.png" ]; then
+  cp "$OUT/devset-out/plots/success.png" "$IMG/devset-success.png"
+  cp "$OUT/devset-out/plots/precision.png" "$IMG/devset-precision.png"
 fi
-
 cpu=$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')
 os=$(. /etc/os-release && echo "$PRETTY_NAME")
-elapsed=$(( $(date +%s) - start ))
-
-block="$OUT/block.md"
+page="$OUT/benchmarks.md"
 {
-  echo "Generated by \`scripts/benchmarks.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC'), built from"
-  echo "commit \`$commit\`$dirty, in ${elapsed} s. Machine: $cpu, $(nproc) cores, $os;"
-  echo "build: the \`host\` preset (RelWithDebInfo, -O2). The machine was shared with other"
-  echo "jobs, so times are indicative; ratios come from the same run. The OpenCV trackers use"
-  echo "OpenCV's default thread pool, cuetrack a single thread. Protocol (cuetrack-bench,"
-  echo "see docs/bench-json.md): initialise at the first ground-truth box, score every later"
-  echo "frame with a ground-truth line (an invisible target counts with overlap 0); hit ="
-  echo "overlap > 1/3, PASCAL = overlap > 0.5; centre distance over frames where both boxes"
-  echo "exist; ms per frame = the tracker's update call only (decoding excluded); allocs = heap"
-  echo "allocations inside update calls per run; all figures are means over runs (seeds)."
+  echo "# Benchmarks"
   echo
-  echo "### BoBoT (RGB): tests 1.1-1.4, best and the OpenCV trackers"
+  echo "The current state, generated by \`scripts/benchmarks.sh\` on $(date -u '+%Y-%m-%d'), built"
+  echo "from commit \`$commit\`$dirty, in $(( $(date +%s) - start )) s. Machine: $cpu, $(nproc) cores"
+  echo "(shared with other jobs, so times are indicative; ratios come from the same run), $os;"
+  echo "the \`host\` preset (RelWithDebInfo). Every figure is re-made by that script; each table"
+  echo "gives its command. What the figures mean: docs/bench-json.md. What was tried and"
+  echo "dropped: [experiments.md](experiments.md)."
   echo
-  if [ -f "$OUT/bobot.md" ]; then
-    echo "cuetrack: $RUNS runs per configuration; OpenCV peers: $PEER_RUNS runs. Rows in *italics*"
-    echo "are the paper's Table 1 (Xeon W3565 @ 3.2 GHz; its cpu column is its own machine; its"
-    echo "1.4 row for H is not legible in our copy). Command:"
+  echo "## Development set"
+  echo
+  if [ $have_shared = 1 ]; then
+    echo "Every tracking change is judged here (docs/algorithm.md): 13 real videos of"
+    echo "\`../shared/data/otb\` (OTB, VOT, UAV123, UAVDT), BoBoT C, E and H, and the eight synthetic"
+    echo "RGB-D scenes; cuetrack 5 seeds, the OpenCV trackers once (they are deterministic). Mean"
+    echo "overlap [%] per sequence; the last column is best minus 1.1, \`*\` where it exceeds the"
+    echo "seed-to-seed spread. Command:"
     echo
-    echo '```'
-    show "${bobot_cmd[*]}"
-    echo '```'
+    code "scripts/devset.sh best 1.1"
     echo
-    cat "$OUT/bobot.md"
+    sed -n '/^| sequence/,$p' "$OUT/devset-out/devset.md"
     echo
-    for s in Vid_C_juice Vid_E_person_partially_occluded Vid_H_panda; do
-      [ -e "$IMG/bench-$s.png" ] && echo "![overlap over time, $s](img/bench-$s.png)"
-    done
+    echo "![success plot](img/devset-success.png) ![precision plot](img/devset-precision.png)"
   else
-    echo "(not run: $BOBOT missing or failed; see the script's messages)"
+    echo "(not run: no ../shared/data/otb or bobot)"
   fi
   echo
-  echo "### Synthetic RGB-D: tests 2.1-2.5, best and the OpenCV trackers"
+  echo "## BoBoT: the paper's protocol"
   echo
-  echo "Scenes of the cuetrack-synth generator (640x480, 150 frames, exact ground truth,"
-  echo "Kinect-like depth): ${SCENES[*]}. The paper's Table 3 figures are on its own"
-  echo "BoBoT-D Kinect sequences, not on these, so they are listed apart, for the layout and"
-  echo "the order of magnitude only. cuetrack: $SYN_RUNS runs per configuration; OpenCV peers:"
-  echo "$PEER_RUNS runs. Command:"
+  if [ -f "$OUT/bobot.md" ]; then
+    echo "The paper's Table 1 protocol on BoBoT C, E, H: cuetrack $RUNS seeds, the OpenCV trackers"
+    echo "once. Rows in *italics* are the paper's own figures (Xeon W3565; its cpu column is its"
+    echo "machine). Command:"
+    echo
+    code "${bobot_cmd[*]}"
+    echo
+    cat "$OUT/bobot.md"
+  else
+    echo "(not run: $BOBOT missing)"
+  fi
   echo
-  echo '```'
-  show "${syn_cmd[*]}"
-  echo '```'
+  echo "## Synthetic RGB-D"
+  echo
+  echo "The cuetrack-synth scenes (640x480, 150 frames, exact 2D and 3D truth, Kinect-like"
+  echo "depth with holes and noise): ${SCENES[*]}. cuetrack $SYN_RUNS seeds. The paper's Table 3"
+  echo "is on its own Kinect sequences, not these: listed apart, for the order of magnitude. Command:"
+  echo
+  code "${syn_cmd[*]}"
   echo
   cat "$OUT/synth.md"
   echo
-  for s in "${SCENES[@]}"; do
-    [ -e "$IMG/bench-$s.png" ] && echo "![overlap over time, $s](img/bench-$s.png)"
-  done
-  echo
-  echo "### Real Kinect depth: panned stills, tests 2.1, 2.4, 2.5, best and its ablations"
+  echo "## Real Kinect depth: panned stills"
   echo
   if [ -f "$OUT/pan.md" ]; then
-    echo "Ten targets of the real Kinect stills in ../shared/data/kinect-stills (three chairs of"
-    echo "the NYU frames; of the TUM desk a monitor, a telephone, a mug, the teddy bear half"
-    echo "behind the monitor, a can, the keyboard and a tape roll on its stand), each made into 150"
-    echo "frames by the \`pan:\` source: crops sweeping 1/16 of the frame (a camera panning and"
-    echo "tilting a few degrees), fresh colour noise per frame, the real depth with its holes."
-    echo "Boxes drawn by hand around the whole object (chairs with their legs). cuetrack:"
-    echo "$SYN_RUNS runs per configuration; KCF and CSRT: $PEER_RUNS runs. Command:"
+    echo "Ten targets of the real Kinect stills in ../shared/data/kinect-stills (NYU chairs; a"
+    echo "monitor, telephone, mug, teddy bear, can, keyboard and tape roll of the TUM desk), each made"
+    echo "into 150 frames by the \`pan:\` source (crops sweeping 1/16 of the frame, fresh colour noise,"
+    echo "the real depth with its holes). cuetrack $SYN_RUNS seeds. Command:"
     echo
-    echo '```'
-    show "${pan_cmd[*]}"
-    echo '```'
+    code "${pan_cmd[*]}"
     echo
     cat "$OUT/pan.md"
   else
-    echo "(not run: $STILLS missing or failed; see the script's messages)"
+    echo "(not run: $STILLS missing)"
   fi
   echo
-  echo "### BoBoT from a slower camera and over a lossy link: best's fast-motion particles"
+  echo "## Speed and memory"
   echo
-  if [ -f "$OUT/slow.md" ] && [ -f "$OUT/lossy.md" ]; then
-    echo "The same three videos, thinned after the first box: every 2nd frame (12.5 fps: a board"
-    echo "that tracks every other Kinect frame; C's carton then moves up to 0.6 of its width per"
-    echo "frame), and 10% of the frames dropped at random (the same ones for every tracker and"
-    echo "run). Frames left out are neither tracked nor scored. best-nofastmotion is best without"
-    echo "its 2D fast-motion particles (docs/algorithm.md). cuetrack: $RUNS runs; KCF and CSRT:"
-    echo "$PEER_RUNS runs. Commands:"
+  echo "Median update time on one x86 core, 150 frames of the synthetic scene \`moving\` (640x480"
+  echo "RGB-D), with the stages (µs). \`sizeof(Tracker)\` = $size_line B for every preset, allocated"
+  echo "once; no heap use while tracking (proved by \`test_core_nomalloc\` and the bench's allocs"
+  echo "column). Command: \`cuetrack-trackspeed --preset P\`."
+  echo
+  echo "| preset | median µs / frame | stages (µs) |"
+  echo "|---|---:|---|"
+  printf '%s' "$speed_rows"
+  echo
+  if [ -n "$arm_rows" ]; then
+    echo "On aarch64, exact instructions per frame (qemu-user with the qemu-icount plugin; 50 frames"
+    echo "minus 0 frames, divided by 50; generic \`-O2\`, no board flags). Command:"
+    echo "\`qemu-aarch64 -plugin libicount.so -d plugin $ARM/bin/cuetrack-trackspeed --preset P --frames N --icount\`."
     echo
-    echo '```'
-    show "${slow_cmd[*]}"
-    show "${lossy_cmd[*]}"
-    echo '```'
-    echo
-    echo "Every 2nd frame:"
-    echo
-    cat "$OUT/slow.md"
-    echo
-    echo "10% of the frames dropped:"
-    echo
-    cat "$OUT/lossy.md"
+    echo "| preset | aarch64 instructions / frame |"
+    echo "|---|---:|"
+    printf '%s' "$arm_rows"
   else
-    echo "(not run: $BOBOT missing or failed; see the script's messages)"
+    echo "(aarch64 instruction counts not measured: no $ARM build, qemu-aarch64 or qemu-icount.)"
   fi
   echo
-  echo "### BoBoT from other starts and backwards: temporal robustness"
-  echo
-  if [ -n "$FRAMES" ]; then
-    echo "(not run: FRAMES=$FRAMES cuts the videos before their later starts)"
-  elif [ -f "$OUT/tre-Vid_H_panda.md" ]; then
-    echo "Each video started at frames 0, 100 and 200 and played forward, and started at its"
-    echo "end, at 200 and at 100 and played backward (\`--from\`, \`--to\`, \`--reverse\`;"
-    echo "docs/bench-json.md): the temporal robustness evaluation of the OTB benchmark, plus"
-    echo "a target that moves the other way. Each run initialises at its first frame's"
-    echo "ground-truth box; Averages are over the six starts. Where E starts inside the"
-    echo "occlusion (\`.from200\`, \`.to200.rev\`), the first box holds half the person and every"
-    echo "tracker keeps that half, so every one scores 60-70 there. cuetrack: $RUNS runs; KCF,"
-    echo "CSRT and MedianFlow: $PEER_RUNS runs. Commands:"
-    echo
-    echo '```'
-    for f in "${bobot_seqs[@]}"; do
-      tre_cmd "$f"
-      show "${TRE[*]}"
-    done
-    echo '```'
-    for f in "${bobot_seqs[@]}"; do
-      echo
-      cat "$OUT/tre-$(basename "$f" .avi).md"
-    done
-  else
-    echo "(not run: $BOBOT missing or failed; see the script's messages)"
-  fi
-  echo
-  echo "### Synthetic RGB-D at 10 fps: best's fast-motion particles in 3D"
-  echo
-  echo "The synthetic scenes above, every 3rd frame (10 fps instead of 30: a board that"
-  echo "tracks every third Kinect frame). cuetrack: $SYN_RUNS runs; KCF and CSRT: $PEER_RUNS"
-  echo "runs. Command:"
+  echo "The integral images, one 640x480 frame per kernel, each SIMD kernel bit-exact to the"
+  echo "scalar reference (\`cuetrack-microbench --runs 200\`; on ARM \`apps/microbench/icount.sh\`):"
   echo
   echo '```'
-  show "${slowsyn_cmd[*]}"
+  echo "$micro"
   echo '```'
   echo
-  cat "$OUT/slowsyn.md"
-  true
-} > "$block"
-
-if [ "${DRY:-0}" = 1 ]; then
-  cat "$block"
-else
-  # Replace what lies between the markers; everything else in the doc stays as it is.
-  awk -v block="$block" '
-    /<!-- BEGIN cuetrack-bench/ { print; while ((getline line < block) > 0) print line; skip = 1; next }
-    /<!-- END cuetrack-bench/ { skip = 0 }
-    !skip { print }' "$DOC" > "$OUT/benchmarks.md"
-  grep -q "<!-- END cuetrack-bench" "$OUT/benchmarks.md" || { echo "benchmarks.sh: markers missing in $DOC" >&2; exit 1; }
-  cp "$OUT/benchmarks.md" "$DOC"
-  stamp "wrote $DOC and $IMG/bench-*.png"
-fi
+  echo "## On-board path"
+  echo
+  if [ -n "$path_rows" ]; then
+    echo "What a board spends per frame, in aarch64 instructions: libfreenect delivering a recorded"
+    echo "Kinect stream (fakenect replaying \`cuetrack-synth --scene moving\`), the Kinect driver's"
+    echo "conversion (raw 11-bit depth to mm, registration), the tracker, and the serial encoder"
+    echo "writing each track to a pseudo-terminal; beside the tracker alone on the same scene"
+    echo "((60 frames - 20 frames) / 40, qemu-icount). Command: \`FAKENECT_PATH=rec qemu-aarch64"
+    echo "-plugin libicount.so -d plugin $ARM/bin/cuetrack --source kinect --config P --frames N --serial PTY\`."
+    echo
+    echo "| preset | whole path / frame | tracker alone / frame |"
+    echo "|---|---:|---:|"
+    printf '%s' "$path_rows"
+  else
+    echo "(not measured: needs an aarch64 build in $ARM with cuetrack, qemu-aarch64, socat, the"
+    echo "arm64 fakenect library and qemu-icount.)"
+  fi
+  echo
+  echo "Serial link budget (from docs/serial-protocol.md): a TRACK frame is 46 bytes on the wire,"
+  echo "4.0 ms at 115200 baud (12 % of the line at 30 fps), 0.5 ms at 921600."
+} > "$page"
+if [ "${DRY:-0}" = 1 ]; then cat "$page"; else cp "$page" "$DOC"; stamp "wrote $DOC ($(wc -l < "$DOC") lines)"; fi
 exit $status

@@ -9,13 +9,25 @@ set(CMAKE_C_COMPILER ${CUETRACK_CROSS_CC})
 set(CMAKE_CXX_COMPILER ${CUETRACK_CROSS_CXX})
 set(CMAKE_LIBRARY_ARCHITECTURE ${CUETRACK_TRIPLE})
 
-# Debian multiarch: target libraries live in /usr/lib/<triple>, headers in /usr/include.
+# Debian multiarch: the target's libraries live in /usr/lib/<triple> (and its libc in
+# /usr/<triple>), beside the build machine's. There is no separate sysroot: the Debian
+# cross compiler's is /, and CMAKE_SYSROOT=/ would make all of / a find root, the
+# build machine's /usr/lib and /usr/local included. So the find roots are exactly the
+# target's own folders and every find_library/find_path/find_package searches only
+# there (ONLY): a library of the build machine cannot be found. Programs (pkg-config,
+# qemu) are the build machine's (NEVER). pkg-config reads only the target's .pc files
+# (and the architecture-independent ones); its -L/usr/lib/<triple> lies inside a root.
+# Headers in /usr/include are shared by all architectures but lie outside the roots
+# (find_path would not see them): the compiler searches /usr/include itself, libraries
+# give their include folders through pkg-config, and header-only packages are found
+# through their config folders (Catch2_DIR, Eigen3_DIR in CMakePresets.json).
 set(CMAKE_FIND_ROOT_PATH /usr/${CUETRACK_TRIPLE} /usr/lib/${CUETRACK_TRIPLE})
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
-set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY BOTH)
-set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE BOTH)
-set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE BOTH)
+set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
 set(ENV{PKG_CONFIG_LIBDIR} "/usr/lib/${CUETRACK_TRIPLE}/pkgconfig:/usr/share/pkgconfig")
+set(ENV{PKG_CONFIG_PATH} "")
 set(ENV{PKG_CONFIG_SYSROOT_DIR} "")
 
 if(CUETRACK_ARCH_FLAGS)

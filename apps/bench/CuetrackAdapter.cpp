@@ -16,12 +16,8 @@ Tracker& sharedTracker() {
 
 // Ablations of the beyond-the-paper switches: "<preset>-<switch off>", e.g.
 // best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
-// best-noanchor (no 2D scale anchor), best-noanchorcloud (the anchor corrects the reported
-// box only, not the particles), best-nomodeguard (the weighted mean even when the
-// cloud has split), best-norefine (search windows not hill-climbed while lost),
-// best-nofastmotion (no jumping particles, no coasting over dropped frames), best-noshift
-// (the 2D anchor corrects the size only), best-nolearndepth (3D: no depth check before
-// learning), 1.1-centrednegatives (2D near negatives centred on the estimate).
+// best-nofastmotion (no jumping particles, no coasting over dropped frames),
+// 1.1-centrednegatives (2D near negatives centred on the estimate).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
     const char* suffix;
@@ -29,13 +25,7 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
   };
   static const Off kOffs[] = {{"-nolost", &TrackerConfig::lostDetection},
                               {"-fixedsize", &TrackerConfig::adaptCylinderSize},
-                              {"-noanchor", &TrackerConfig::scaleAnchor2d},
-                              {"-noanchorcloud", &TrackerConfig::anchorMovesCloud},
-                              {"-nomodeguard", &TrackerConfig::modeGuard},
-                              {"-norefine", &TrackerConfig::refineSearch},
                               {"-nofastmotion", &TrackerConfig::fastMotion},
-                              {"-noshift", &TrackerConfig::templateShift},
-                              {"-nolearndepth", &TrackerConfig::learnDepthCheck},
                               {"-centrednegatives", &TrackerConfig::anchoredNegatives2d}};
   for (const Off& o : kOffs) {
     const std::string suffix(o.suffix);

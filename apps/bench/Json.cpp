@@ -71,6 +71,28 @@ void appendFigures(std::string& out, const Figures& f, bool valid) {
   appendNumber(out, f.msMean, 4, valid);
   out += ", \"allocs\": ";
   appendNumber(out, f.allocs, 1, valid);
+  out += ", \"auc\": ";
+  appendNumber(out, f.auc, 3, valid);
+  out += ", \"precision20\": ";
+  appendNumber(out, f.precision20, 3, valid);
+  out += ", \"overlap_spread\": ";
+  appendNumber(out, f.overlapSpread(), 3, valid);
+  out += ", \"overlap_runs\": [";
+  for (size_t k = 0; valid && k < f.runOverlap.size(); ++k) {
+    if (k > 0) out += ", ";
+    appendNumber(out, f.runOverlap[k], 3);
+  }
+  out += "], \"success\": [";
+  for (int t = 0; valid && t < kSuccessSteps; ++t) {
+    if (t > 0) out += ", ";
+    appendNumber(out, f.success[t], 4);
+  }
+  out += "], \"precision\": [";
+  for (int t = 0; valid && t < kPrecisionSteps; ++t) {
+    if (t > 0) out += ", ";
+    appendNumber(out, f.precision[t], 4);
+  }
+  out += "]";
 }
 
 void appendEntry(std::string& out, const EntryResult& e, const char* indent) {
@@ -94,6 +116,8 @@ void appendEntry(std::string& out, const EntryResult& e, const char* indent) {
     Figures f = s.figures;
     if (!s.ran) f.frames = 0;
     appendFigures(out, f, s.ran);
+    out += ", \"skipped_frames\": ";
+    appendNumber(out, s.skippedFrames, 0);
     out += "}";
   }
   out += "],\n";

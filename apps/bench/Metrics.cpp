@@ -35,6 +35,8 @@ FrameEval evaluateFrame(const Box& groundTruth, const Box& predicted) {
 void RunAccumulator::add(const Box& groundTruth, const Box& predicted) {
   const FrameEval e = evaluateFrame(groundTruth, predicted);
   addOverlapOnly(e.overlap);
+  for (int t = 0; t < kPrecisionSteps; ++t)
+    if (e.hasCenterDist && e.centerDistPx <= t) ++_precisionFrames[t];
   if (e.hasCenterDist) {
     _centerSum += e.centerDistPx;
     ++_centerFrames;
@@ -57,6 +59,8 @@ void RunAccumulator::addOverlapOnly(double overlapValue) {
   _overlapSum += overlapValue;
   if (overlapValue > kHitThreshold) ++_hits;
   if (overlapValue > kPascalThreshold) ++_pascals;
+  for (int t = 0; t < kSuccessSteps; ++t)
+    if (overlapValue > t / double(kSuccessSteps - 1)) ++_successFrames[t];
 }
 
 RunFigures RunAccumulator::figures() const {
@@ -66,6 +70,9 @@ RunFigures RunAccumulator::figures() const {
     f.overlapPct = 100.0 * _overlapSum / _frames;
     f.hitPct = 100.0 * _hits / _frames;
     f.pascalPct = 100.0 * _pascals / _frames;
+    for (int t = 0; t < kSuccessSteps; ++t) f.success[t] = double(_successFrames[t]) / _frames;
+    for (int t = 0; t < kPrecisionSteps; ++t)
+      f.precision[t] = double(_precisionFrames[t]) / _frames;
   }
   f.centerFrames = _centerFrames;
   f.centerPx =
@@ -76,6 +83,27 @@ RunFigures RunAccumulator::figures() const {
   f.centerZMm = _centerMmFrames > 0 ? _centerZMmSum / _centerMmFrames
                                     : std::numeric_limits<double>::quiet_NaN();
   return f;
+}
+
+namespace {
+// The curves' single figures [%], from the mean curves.
+void curveFigures(Figures* f) {
+  double sum = 0.0;
+  for (const double v : f->success) sum += v;
+  f->auc = 100.0 * sum / kSuccessSteps;
+  f->precision20 = 100.0 * f->precision[kPrecisionAtPx];
+}
+}  // namespace
+
+double Figures::overlapSpread() const {
+  const size_t n = runOverlap.size();
+  if (n < 2) return 0.0;
+  double mean = 0.0;
+  for (const double v : runOverlap) mean += v;
+  mean /= double(n);
+  double ss = 0.0;
+  for (const double v : runOverlap) ss += (v - mean) * (v - mean);
+  return std::sqrt(ss / double(n - 1));
 }
 
 double median(std::vector<double> values) {
@@ -98,6 +126,10 @@ Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<dou
   int centerRuns = 0, centerMmRuns = 0;
   for (const RunFigures& r : runs) {
     f.overlap += r.overlapPct;
+    f.runOverlap.push_back(r.overlapPct);
+    for (int t = 0; t < kSuccessSteps; ++t) f.success[t] += r.success[t] / double(runs.size());
+    for (int t = 0; t < kPrecisionSteps; ++t)
+      f.precision[t] += r.precision[t] / double(runs.size());
     f.hit += r.hitPct;
     f.pascal += r.pascalPct;
     if (r.centerFrames > 0) {
@@ -117,6 +149,7 @@ Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<dou
   f.hit /= n;
   f.pascal /= n;
   f.centerPct /= n;
+  curveFigures(&f);
   if (centerRuns > 0) f.centerPx = centerSum / centerRuns;
   if (centerMmRuns > 0) {
     f.centerMm = centerMmSum / centerMmRuns;
@@ -143,7 +176,15 @@ Figures averageFigures(const std::vector<Figures>& sequences) {
   double centerSum = 0.0, centerMmSum = 0.0, centerZMmSum = 0.0;
   int centerSeqs = 0, centerMmSeqs = 0;
   bool allStages = true;
+  // Seed k's average needs every sequence to have a k-th run.
+  size_t runs = sequences.front().runOverlap.size();
+  for (const Figures& s : sequences) runs = std::min(runs, s.runOverlap.size());
+  a.runOverlap.assign(runs, 0.0);
   for (const Figures& s : sequences) {
+    for (size_t k = 0; k < runs; ++k) a.runOverlap[k] += s.runOverlap[k] / double(sequences.size());
+    for (int t = 0; t < kSuccessSteps; ++t) a.success[t] += s.success[t] / double(sequences.size());
+    for (int t = 0; t < kPrecisionSteps; ++t)
+      a.precision[t] += s.precision[t] / double(sequences.size());
     a.frames += s.frames;
     a.overlap += s.overlap;
     a.hit += s.hit;
@@ -174,6 +215,7 @@ Figures averageFigures(const std::vector<Figures>& sequences) {
   a.allocs /= n;
   for (double& s : a.stageMs) s /= n;
   a.hasStages = allStages;
+  curveFigures(&a);
   if (centerSeqs > 0) a.centerPx = centerSum / centerSeqs;
   if (centerMmSeqs > 0) {
     a.centerMm = centerMmSum / centerMmSeqs;

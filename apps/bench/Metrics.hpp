@@ -17,6 +17,12 @@
 // is none).
 // Over runs (seeds): plain means of the per-run figures (runs without a centre
 // distance are skipped); times pool every frame of every run.
+// OTB's one-pass curves (Wu et al. 2013), per run then averaged like the rest:
+//   success(t)   = share of evaluated frames with overlap > t, t = 0, 0.05, ..., 1;
+//                  its area under the curve (AUC) is the mean over those 21 thresholds;
+//   precision(t) = share of evaluated frames with a centre distance <= t px,
+//                  t = 0 .. 50; a frame without a distance (either box empty) is a miss;
+//                  read at 20 px.
 #pragma once
 
 #include <cstdint>
@@ -28,6 +34,9 @@ namespace cuetrack::bench {
 
 inline constexpr double kHitThreshold = 1.0 / 3.0;
 inline constexpr double kPascalThreshold = 0.5;
+inline constexpr int kSuccessSteps = 21;    // overlap thresholds 0, 0.05, ..., 1
+inline constexpr int kPrecisionSteps = 51;  // centre-distance thresholds 0 .. 50 px
+inline constexpr int kPrecisionAtPx = 20;   // the field's single precision figure
 
 double overlapDouble(const Box& a, const Box& b);  // IoU, 0 when either is empty
 
@@ -49,6 +58,8 @@ struct RunFigures {
   double centerMm = 0.0;   // NaN when no frame had a 3D position and 3D truth
   double centerZMm = 0.0;  // mean |z error| over the same frames
   int centerMmFrames = 0;
+  double success[kSuccessSteps] = {};      // [0, 1]
+  double precision[kPrecisionSteps] = {};  // [0, 1]
 };
 
 class RunAccumulator {
@@ -69,6 +80,8 @@ class RunAccumulator {
   int _centerFrames = 0;
   double _centerMmSum = 0.0, _centerZMmSum = 0.0;
   int _centerMmFrames = 0;
+  int _successFrames[kSuccessSteps] = {};
+  int _precisionFrames[kPrecisionSteps] = {};
 };
 
 // The figures the JSON schema and the tables carry, for one sequence or an average.
@@ -86,6 +99,15 @@ struct Figures {
   double allocs = 0.0;      // heap allocations while tracking, per run
   double stageMs[5] = {0};  // cuetrack only: features, predict, weigh, learn, total (mean)
   bool hasStages = false;
+  double auc = 0.0;                        // area under the success curve [%]
+  double precision20 = 0.0;                // precision at kPrecisionAtPx [%]
+  double success[kSuccessSteps] = {};      // mean curve over runs (sequences) [0, 1]
+  double precision[kPrecisionSteps] = {};  // likewise
+  // Mean overlap of each run (seed) [%]; for an average, of each seed over the sequences
+  // (the mean of the sequences' k-th runs). Their sample standard deviation is the
+  // seed-to-seed spread: a change is real only when it moves the mean by more.
+  std::vector<double> runOverlap;
+  double overlapSpread() const;  // [%], 0 with fewer than 2 runs
 };
 
 // Means over runs; `frameTimesUs` pools every tracked frame of every run.

@@ -7,6 +7,7 @@
 #include "Peers.hpp"
 #include "TrackerAdapters.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
+#include "cuetrack/platform/OptionOnce.hpp"
 
 namespace cuetrack::bench {
 namespace {
@@ -53,9 +54,7 @@ const char* usage() {
          "                     (repeatable; default cuetrack)\n"
          "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best, or a\n"
          "                     preset with a beyond-the-paper switch off: best-nolost,\n"
-         "                     best-fixedsize, best-noanchor, best-noanchorcloud,\n"
-         "                     best-nomodeguard, best-norefine, best-nofastmotion,\n"
-         "                     best-noshift, best-nolearndepth; or a paper preset\n"
+         "                     best-fixedsize, best-nofastmotion; or a paper preset\n"
          "                     with 2D negatives centred: 1.1-centrednegatives\n"
          "                     (repeatable; default best)\n"
          "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
@@ -97,8 +96,33 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
   *help = false;
   std::vector<std::string> trackers, configs;
   SequenceArg pending;  // --gt, --from, --to, --reverse wait for their SEQUENCE
+  // The run-wide settings come once; --tracker and --config add to their lists, and the
+  // per-sequence ones (--gt, --from, ...) apply to the next SEQUENCE each time.
+  static const char* const kOnce[] = {"--runs",
+                                      "--peer-runs",
+                                      "--frames",
+                                      "--max-mem",
+                                      "--seed",
+                                      "--json",
+                                      "--markdown",
+                                      "--csv",
+                                      "--plots",
+                                      "--results",
+                                      "--overlay",
+                                      "--paper",
+                                      "--skip-bad-frames",
+                                      "--rgb-only",
+                                      "--quiet"};
+  platform::OptionOnce once;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
+    for (const char* name : kOnce) {
+      char twice[64];
+      if (a == name && !once.first(argv[i], twice, sizeof twice)) {
+        *err = twice;
+        return false;
+      }
+    }
     auto value = [&](const char** v) {
       if (i + 1 >= argc) {
         *err = a + " needs a value";
@@ -141,8 +165,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
         if (!isCuetrackConfig(c)) {
           *err = "--config: unknown configuration '" + c +
                  "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
-                 "best-noanchor, best-noanchorcloud, best-nomodeguard, best-norefine, "
-                 "best-nofastmotion, best-noshift, best-nolearndepth, 1.1-centrednegatives)";
+                 "best-nofastmotion, 1.1-centrednegatives)";
           return false;
         }
         configs.push_back(c);
@@ -188,15 +211,16 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       }
       o->seed = s;
     } else if (a == "--json" || a == "--markdown" || a == "--csv" || a == "--plots" ||
-               a == "--results" || a == "--overlay" || a == "--video") {
+               a == "--results" || a == "--overlay" || a == "--peer-cache" || a == "--video") {
       if (!value(&v)) return false;
-      std::string& dst = a == "--json"       ? o->jsonPath
-                         : a == "--markdown" ? o->markdownPath
-                         : a == "--csv"      ? o->csvDir
-                         : a == "--plots"    ? o->plotDir
-                         : a == "--overlay"  ? o->overlayDir
-                         : a == "--video"    ? o->videoDir
-                                             : o->resultsDir;
+      std::string& dst = a == "--json"         ? o->jsonPath
+                         : a == "--markdown"   ? o->markdownPath
+                         : a == "--csv"        ? o->csvDir
+                         : a == "--plots"      ? o->plotDir
+                         : a == "--overlay"    ? o->overlayDir
+                         : a == "--peer-cache" ? o->peerCacheDir
+                         : a == "--video"      ? o->videoDir
+                                               : o->resultsDir;
       dst = v;
     } else if (a == "--paper") {
       if (!value(&v)) return false;

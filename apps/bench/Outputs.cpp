@@ -154,6 +154,82 @@ bool writeOverlapPlot(const std::string& path, const std::vector<EntryResult>& e
   return false;
 }
 
+bool writeCurvePlot(const std::string& path, const std::vector<EntryResult>& entries,
+                    CurveKind kind, std::string* err) {
+  const bool success = kind == CurveKind::Success;
+  const int width = 640, height = 400;
+  const int left = 50, right = 230, top = 30, bottom = 40;  // margins [px]
+  const int plotW = width - left - right, plotH = height - top - bottom;
+  cv::Mat img(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+  const double xMax = success ? 1.0 : kPrecisionSteps - 1;
+  auto px = [&](double x, double y) {
+    return cv::Point(left + static_cast<int>(x / xMax * plotW),
+                     top + static_cast<int>((1.0 - y) * plotH));
+  };
+  const cv::Scalar grid(225, 225, 225), axis(0, 0, 0);
+  char buf[96];
+  for (int i = 0; i <= 5; ++i) {
+    const double v = i * 0.2;
+    cv::line(img, px(0, v), px(xMax, v), grid, 1);
+    std::snprintf(buf, sizeof buf, "%.1f", v);
+    cv::putText(img, buf, px(0, v) + cv::Point(-35, 4), cv::FONT_HERSHEY_SIMPLEX, 0.4, axis, 1,
+                cv::LINE_AA);
+    const double x = xMax * i / 5;
+    std::snprintf(buf, sizeof buf, success ? "%.1f" : "%.0f", x);
+    cv::putText(img, buf, px(x, 0) + cv::Point(-8, 18), cv::FONT_HERSHEY_SIMPLEX, 0.4, axis, 1,
+                cv::LINE_AA);
+  }
+  cv::rectangle(img, px(0, 1), px(xMax, 0), axis, 1);
+  cv::putText(img, success ? "overlap threshold" : "location error threshold [px]",
+              cv::Point(left + plotW / 2 - 70, height - 6), cv::FONT_HERSHEY_SIMPLEX, 0.45, axis, 1,
+              cv::LINE_AA);
+  int ranMin = 0;
+  for (const EntryResult& e : entries) ranMin = std::max(ranMin, e.sequencesRan());
+  std::snprintf(buf, sizeof buf, "%s plots of OPE, mean of %d sequences",
+                success ? "Success" : "Precision", ranMin);
+  cv::putText(img, buf, cv::Point(left, 20), cv::FONT_HERSHEY_SIMPLEX, 0.55, axis, 1, cv::LINE_AA);
+
+  // Legend in the field's order: best figure first.
+  std::vector<size_t> order;
+  for (size_t i = 0; i < entries.size(); ++i)
+    if (entries[i].sequencesRan() > 0) order.push_back(i);
+  auto figure = [&](size_t i) {
+    const Figures a = entries[i].average();
+    return success ? a.auc : a.precision20;
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return figure(a) > figure(b); });
+  const size_t palette = sizeof kPalette / sizeof kPalette[0];
+  for (size_t k = 0; k < order.size(); ++k) {
+    const EntryResult& e = entries[order[k]];
+    const Figures a = e.average();
+    const cv::Scalar colour = kPalette[order[k] % palette];
+    const int legendY = top + 14 + 16 * static_cast<int>(k);
+    std::snprintf(buf, sizeof buf, "%s [%.1f]", e.label().c_str(), figure(order[k]));
+    cv::line(img, cv::Point(width - right + 10, legendY - 4),
+             cv::Point(width - right + 30, legendY - 4), colour, 2);
+    cv::putText(img, buf, cv::Point(width - right + 35, legendY), cv::FONT_HERSHEY_SIMPLEX, 0.4,
+                axis, 1, cv::LINE_AA);
+    const int steps = success ? kSuccessSteps : kPrecisionSteps;
+    const double* y = success ? a.success : a.precision;
+    for (int t = 1; t < steps; ++t) {
+      const double x0 = success ? (t - 1) / double(steps - 1) : t - 1;
+      const double x1 = success ? t / double(steps - 1) : t;
+      cv::line(img, px(x0, y[t - 1]), px(x1, y[t]), colour, 2, cv::LINE_AA);
+    }
+  }
+  std::snprintf(buf, sizeof buf, success ? "[AUC, %%]" : "[at %d px, %%]", kPrecisionAtPx);
+  cv::putText(img, buf, cv::Point(width - right + 10, height - bottom), cv::FONT_HERSHEY_SIMPLEX,
+              0.4, axis, 1, cv::LINE_AA);
+  try {
+    if (cv::imwrite(path, img)) return true;
+    *err = path + ": cannot write PNG";
+  } catch (const cv::Exception& e) {
+    *err = path + ": cannot write PNG: " + e.what();
+  }
+  return false;
+}
+
 namespace {
 
 constexpr int kLegendRowPx = 18;

@@ -19,6 +19,13 @@ bool writeOverlapCsv(const std::string& path, const std::vector<EntryResult>& en
 bool writeOverlapPlot(const std::string& path, const std::vector<EntryResult>& entries,
                       size_t sequence, std::string* err);
 
+// OTB's one-pass-evaluation plots over all sequences (the mean curves of each entry):
+// success rate against overlap threshold, the legend giving the area under the curve,
+// or precision against centre-error threshold, the legend giving the value at 20 px.
+enum class CurveKind { Success, Precision };
+bool writeCurvePlot(const std::string& path, const std::vector<EntryResult>& entries,
+                    CurveKind kind, std::string* err);
+
 // BoBoT result file: `header` (the ground truth's first line, which the evaluator
 // compares), then `idx x y w h` divided by the image size; an empty box -> 0 0 0 0.
 struct IndexedBox {

@@ -209,6 +209,19 @@ std::string textReport(const std::vector<EntryResult>& entries) {
     textTable(out, entries, kCentreMm);
   }
 
+  out +=
+      "\nAverages with their seed-to-seed spread (sample s.d. of the per-seed averages), "
+      "and OTB's one-pass figures: AUC of the success plot, precision at 20 px [%]\n";
+  appendf(out, "%-22s %9s %9s %6s %9s %9s\n", "tracker", "overlap", "spread", "runs", "AUC",
+          "prec@20");
+  for (const EntryResult& e : entries) {
+    if (e.sequencesRan() == 0) continue;
+    const Figures a = e.average();
+    appendf(out, "%-22s %9s %9s %6zu %9s %9s\n", fit(e.label(), 22).c_str(),
+            num(a.overlap, 2).c_str(), num(a.overlapSpread(), 2).c_str(), a.runOverlap.size(),
+            num(a.auc, 2).c_str(), num(a.precision20, 2).c_str());
+  }
+
   const EntryResult* kcf = findTracker(entries, "opencv-kcf");
   const EntryResult* csrt = findTracker(entries, "opencv-csrt");
   out +=
@@ -274,6 +287,17 @@ std::string markdownReport(const std::vector<EntryResult>& entries, PaperReferen
   if (anyCenterMm(entries)) {
     out += "\n";
     markdownTable(out, entries, kCentreMm);
+  }
+
+  out +=
+      "\n| | Avg overlap | seed spread (s.d.) | runs | AUC (success) | precision at 20 px "
+      "|\n|---|---:|---:|---:|---:|---:|\n";
+  for (const EntryResult& e : entries) {
+    if (e.sequencesRan() == 0) continue;
+    const Figures a = e.average();
+    appendf(out, "| %s | %s | %s | %zu | %s | %s |\n", e.label().c_str(), num(a.overlap, 2).c_str(),
+            num(a.overlapSpread(), 2).c_str(), a.runOverlap.size(), num(a.auc, 2).c_str(),
+            num(a.precision20, 2).c_str());
   }
 
   // Speed.

@@ -19,6 +19,7 @@ struct SequenceResult {
   // A --results file that could not be written (reported once; later runs write none).
   std::string outputError;
   Figures figures;
+  int skippedFrames = 0;  // damaged or unreadable frames the reader skipped (--skip-bad-frames)
   // Mean overlap over runs for each evaluated frame, in frame order (plots, CSV).
   std::vector<int> frameIndex;
   std::vector<double> meanOverlap;

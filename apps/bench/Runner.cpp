@@ -194,6 +194,7 @@ bool sliceSequence(Sequence* seq, int fromIndex, int toIndex, bool reverse, std:
 SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const TrackerFactory& factory,
                         const RunOptions& options, Progress& progress) {
   SequenceResult result;
+  result.skippedFrames = seq.skippedFrames;
   result.name = seq.name;
 
   // Initialisation at the first ground-truth box.

@@ -14,10 +14,13 @@
 #include "Json.hpp"
 #include "Options.hpp"
 #include "Outputs.hpp"
+#include "PeerCache.hpp"
+#include "Peers.hpp"
 #include "Report.hpp"
 #include "Runner.hpp"
 #include "Sources.hpp"
 #include "TrackerAdapters.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
@@ -68,7 +71,7 @@ int main(int argc, char** argv) {
   }
   if (help) {
     std::fputs(usage(), stdout);
-    return 0;
+    return cuetrack::platform::stdoutWritten("cuetrack-bench") ? 0 : 1;
   }
 
   std::vector<EntryResult> results;
@@ -121,7 +124,21 @@ int main(int argc, char** argv) {
     progress.beginSequence(seq.name, static_cast<int>(si),
                            static_cast<int>(options.sequences.size()), planned);
     for (size_t ei = 0; ei < options.entries.size(); ++ei) {
-      SequenceResult r = runEntry(options.entries[ei], seq, factory, runOptions, progress);
+      const EntrySpec& spec = options.entries[ei];
+      const bool cacheable = !options.peerCacheDir.empty() && isPeerName(spec.tracker) &&
+                             options.resultsDir.empty();  // result files need the run
+      const std::string cachePath =
+          cacheable ? peerCachePath(options.peerCacheDir, spec, seq, options.seed) : "";
+      SequenceResult r;
+      r.name = seq.name;
+      r.skippedFrames = seq.skippedFrames;
+      if (!cacheable || !loadPeerResult(cachePath, &r)) {
+        r = runEntry(spec, seq, factory, runOptions, progress);
+        if (cacheable && !savePeerResult(cachePath, r, &err)) {
+          std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
+          ++failures;
+        }
+      }
       if (!r.ran) {
         std::fprintf(stderr, "cuetrack-bench: %s on %s: %s\n", results[ei].label().c_str(),
                      seq.name.c_str(), r.error.c_str());
@@ -161,6 +178,16 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (!options.plotDir.empty() && !results.empty() && !results.front().sequences.empty()) {
+    for (const CurveKind kind : {CurveKind::Success, CurveKind::Precision}) {
+      const char* name = kind == CurveKind::Success ? "/success.png" : "/precision.png";
+      if (!makeDirs(options.plotDir, &err) ||
+          !writeCurvePlot(options.plotDir + name, results, kind, &err)) {
+        std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
+        ++failures;
+      }
+    }
+  }
   const std::string report = textReport(results);
   errno = 0;
   if (std::fwrite(report.data(), 1, report.size(), stdout) != report.size() ||

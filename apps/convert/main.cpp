@@ -10,6 +10,8 @@
 
 #include "SequenceOut.hpp"
 #include "cuetrack/drivers/OpenSource.hpp"
+#include "cuetrack/platform/OptionOnce.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
@@ -31,11 +33,16 @@ void usage(FILE* f) {
       "  --frames N        at most N frames\n"
       "  --seed S          seed of synthetic scenes\n"
       "  --gt PATH         ground truth overriding the source's own\n"
-      "  --skip-bad        skip unreadable frames (counted) instead of stopping\n"
+      "  --skip-bad        skip unreadable or damaged frames (counted) instead of stopping\n"
       "  --bench           read every frame, print frames/s (nothing written)\n"
+      "  --force           overwrite an existing .avi and its .gt.txt (folders holding a\n"
+      "                    recording are always refused)\n"
+      "Outputs are whole or absent: a failed or interrupted run (SIGINT/SIGTERM/SIGHUP)\n"
+      "removes the folder it created, or the .avi and .gt.txt it wrote.\n"
       "formats: fakenect (default), rgbd (RGB-D folder), otb (OTB folder, colour),\n"
       "         avi (BoBoT-style MJPG video; --out is the .avi path)\n"
-      "exit: 0 ok, 1 read/write failed, 2 bad arguments\n",
+      "exit: 0 ok, 1 read/write failed (stdout too), 2 bad arguments (an option given\n"
+      "twice too)\n",
       frameSourceHelp());
 }
 
@@ -46,14 +53,22 @@ int main(int argc, char** argv) {
   const char* spec = nullptr;
   const char* out = nullptr;
   const char* format = "fakenect";
-  bool bench = false;
+  bool bench = false, force = false;
   SourceOptions opt;
+  cuetrack::platform::OptionOnce once;
+  char err[1024] = "";
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     const bool hasValue = i + 1 < argc;
+    if (a[0] == '-' && !once.first(a, err, sizeof err)) {
+      std::fprintf(stderr, "cuetrack-convert: %s\n", err);
+      return kExitUsage;
+    }
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
       usage(stdout);
-      return 0;
+      return cuetrack::platform::stdoutWritten("cuetrack-convert") ? 0 : kExitFailed;
+    } else if (!std::strcmp(a, "--force")) {
+      force = true;
     } else if (!std::strcmp(a, "--out") && hasValue) {
       out = argv[++i];
     } else if (!std::strcmp(a, "--format") && hasValue) {
@@ -97,7 +112,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cuetrack-convert: SOURCE and --out (or --bench) are required\n");
     return kExitUsage;
   }
-  char err[1024] = "";
   std::unique_ptr<FrameSource> src = openFrameSource(spec, opt, err, sizeof err);
   if (!src) {
     std::fprintf(stderr, "cuetrack-convert: %s\n", err);
@@ -126,19 +140,22 @@ int main(int argc, char** argv) {
         src->name(), n, gSlot.rgb.width(), gSlot.rgb.height(), n > 0 ? n / s : 0.0,
         n > 0 ? 1e3 * s / n : 0.0, n > 0 && cpu > 0 ? n / cpu : 0.0, n > 0 ? 1e3 * cpu / n : 0.0,
         src->skippedFrames());
+    if (!cuetrack::platform::stdoutWritten("cuetrack-convert")) return kExitFailed;
     return n > 0 ? 0 : kExitFailed;
   }
-  auto sink = openSequenceOut(format, out, src->name(), src->nominalFps(), err, sizeof err);
+  auto sink = openSequenceOut(format, out, src->name(), src->nominalFps(), err, sizeof err, force);
   if (!sink) {
     std::fprintf(stderr, "cuetrack-convert: %s\n", err);
     return std::strncmp(err, "unknown format", 14) == 0 ? kExitUsage : kExitFailed;
   }
-  const int n = copySequence(*src, *sink, gSlot, err, sizeof err);
+  cuetrack::platform::installStopSignals();  // an interrupted run removes its partial output
+  const int n =
+      copySequence(*src, *sink, gSlot, err, sizeof err, cuetrack::platform::stopRequested);
   if (n < 0) {
     std::fprintf(stderr, "cuetrack-convert: %s\n", err);
     return kExitFailed;
   }
   std::printf("cuetrack-convert: wrote %d frames of %s to %s (%s), skipped %d\n", n, spec, out,
               format, src->skippedFrames());
-  return 0;
+  return cuetrack::platform::stdoutWritten("cuetrack-convert") ? 0 : kExitFailed;
 }

@@ -1,4 +1,5 @@
 #include "RecordOptions.hpp"
+#include "cuetrack/platform/OptionOnce.hpp"
 
 #include <cerrno>
 #include <cstdlib>
@@ -61,11 +62,13 @@ void usage(std::FILE* to) {
       "  --quiet              no progress line\n"
       "  --help               this text\n"
       "\n"
-      "Stops at the limit, on SIGINT/SIGTERM (Ctrl-C), or at the end of a fakenect replay;\n"
+      "Stops at the limit, on SIGINT/SIGTERM/SIGHUP (Ctrl-C), or at the end of a fakenect\n"
+      "replay;\n"
       "the progress line on stderr shows frames, seconds, dropped and unpaired frames.\n"
       "\n"
-      "Exit codes: 0 recorded (limit, signal or end of replay), 1 bad command line,\n"
-      "2 no Kinect / cannot open it / stream failed (unplugged, no frames), 3 cannot write.\n");
+      "Exit codes: 0 recorded (limit, signal or end of replay), 1 no Kinect / cannot open\n"
+      "it / stream failed (unplugged, no frames), 2 bad command line (an option given twice\n"
+      "too), 3 cannot write.\n");
 }
 
 ParseResult parse(int argc, char** argv, Options* out, char* err, std::size_t errLen) {
@@ -74,8 +77,10 @@ ParseResult parse(int argc, char** argv, Options* out, char* err, std::size_t er
     std::snprintf(err, errLen, "%s: '%s'", what, arg ? arg : "");
     return ParseResult::Error;
   };
+  platform::OptionOnce once;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
+    if (a[0] == '-' && !once.first(a, err, errLen)) return ParseResult::Error;
     const char* v = i + 1 < argc ? argv[i + 1] : nullptr;
     auto needValue = [&]() {
       if (!v) std::snprintf(err, errLen, "%s needs a value", a);

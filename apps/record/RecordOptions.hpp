@@ -9,9 +9,9 @@
 namespace cuetrack::record {
 
 // Exit codes (also printed by --help).
-inline constexpr int kExitOk = 0;      // limit reached, stopped by SIGINT/SIGTERM, or replay ended
-inline constexpr int kExitUsage = 1;   // bad command line
-inline constexpr int kExitDevice = 2;  // no Kinect, cannot open it, or the stream failed mid-run
+inline constexpr int kExitOk = 0;      // limit reached, SIGINT/SIGTERM/SIGHUP, or replay ended
+inline constexpr int kExitDevice = 1;  // no Kinect, cannot open it, or the stream failed mid-run
+inline constexpr int kExitUsage = 2;   // bad command line (the convention of every tool)
 inline constexpr int kExitOutput = 3;  // cannot write the recording
 
 enum class Format { Fakenect, Rgbd };

@@ -8,6 +8,7 @@
 #include "RecordOptions.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/KinectSource.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 #if defined(CUETRACK_RECORD_HAVE_RGBD)
@@ -78,7 +79,7 @@ int listDevices() {
     const int m = listKinectSerials(serials, 16, err, sizeof err);
     for (int i = 0; i < m; ++i) std::printf("  #%d serial %s\n", i, serials[i]);
   }
-  return record::kExitOk;
+  return platform::stdoutWritten("cuetrack-record") ? record::kExitOk : record::kExitOutput;
 }
 
 platform::MonotonicClock gClock;
@@ -106,7 +107,7 @@ int main(int argc, char** argv) {
   const record::ParseResult parsed = record::parse(argc, argv, &opt, err, sizeof err);
   if (parsed == record::ParseResult::Help) {
     record::usage(stdout);
-    return record::kExitOk;
+    return platform::stdoutWritten("cuetrack-record") ? record::kExitOk : record::kExitOutput;
   }
   if (parsed == record::ParseResult::Error) {
     std::fprintf(stderr, "cuetrack-record: %s (see --help)\n", err);

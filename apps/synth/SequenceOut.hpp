@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 
 #include "cuetrack/drivers/FrameSource.hpp"
 
@@ -17,15 +18,27 @@ class SequenceOut {
   virtual bool write(const FrameSlot& frame) = 0;
   virtual bool close() = 0;
   virtual const char* error() const = 0;
+  // After a failure: removes what this output created (the folder it made, or the .avi
+  // and its .gt.txt), so a later run cannot read a partial output as a whole one.
+  void discard();
+
+  // Set by openSequenceOut.
+  std::string removeDir;       // a folder it made: removed whole
+  std::string removeFiles[2];  // files it made (or overwrote with --force)
 };
 
 // nullptr with a line in err for an unknown format or an output that cannot be created.
 // fps: the source's frame rate (FrameSource::nominalFps), the avi container's rate; 0 =
-// unknown, then 30 (the Kinect's).
+// unknown, then 30 (the Kinect's). An existing .avi or its .gt.txt is refused unless
+// `force` (folder formats refuse a folder holding a recording, always).
 std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir, const char* name,
-                                             double fps, char* err, size_t errLen);
+                                             double fps, char* err, size_t errLen,
+                                             bool force = false);
 
 // Copies every frame of src into out; returns frames written, -1 on error (line in err).
-int copySequence(FrameSource& src, SequenceOut& out, FrameSlot& slot, char* err, size_t errLen);
+// On an error, or when stopRequested() turns true (a signal), the partial output is
+// discarded and err says so.
+int copySequence(FrameSource& src, SequenceOut& out, FrameSlot& slot, char* err, size_t errLen,
+                 bool (*stopRequested)() = nullptr);
 
 }  // namespace cuetrack

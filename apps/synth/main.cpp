@@ -8,6 +8,8 @@
 
 #include "SequenceOut.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
+#include "cuetrack/platform/OptionOnce.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
@@ -22,7 +24,7 @@ FrameSlot gSlot;  // 1.5 MiB: static storage
 void usage(FILE* f) {
   std::fprintf(f,
                "usage: cuetrack-synth --scene NAME --out DIR [--format fakenect|rgbd|otb|avi]\n"
-               "                      [--frames N] [--seed S] [--size WxH]\n"
+               "                      [--frames N] [--seed S] [--size WxH] [--force]\n"
                "       cuetrack-synth --list\n"
                "Writes a synthetic RGB-D sequence with exact ground truth (groundtruth.txt,\n"
                "BoBoT format) as a fakenect recording (default; INDEX.txt, r-/d-/a- files)\n"
@@ -33,7 +35,12 @@ void usage(FILE* f) {
                "  --frames N     number of frames (1..100000)\n"
                "  --seed S       sensor-noise seed (same seed, same bytes)\n"
                "  --size WxH     image size (default 640x480, at most 640x480)\n"
-               "exit: 0 ok, 1 write failed, 2 bad arguments\n");
+               "  --force        overwrite an existing .avi and its .gt.txt (folders holding a\n"
+               "                 recording are always refused)\n"
+               "Outputs are whole or absent: a failed or interrupted run (SIGINT/SIGTERM/SIGHUP)\n"
+               "removes the folder it created, or the .avi and .gt.txt it wrote.\n"
+               "exit: 0 ok, 1 write failed (stdout too), 2 bad arguments (an option given twice\n"
+               "too)\n");
 }
 
 bool parseInt(const char* s, long lo, long hi, long* out) {
@@ -53,15 +60,24 @@ int main(int argc, char** argv) {
   const char* format = "fakenect";
   long frames = -1, width = 640, height = 480;
   unsigned long long seed = 1;
+  bool force = false;
+  cuetrack::platform::OptionOnce once;
+  char err[600] = "";
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     const bool hasValue = i + 1 < argc;
+    if (a[0] == '-' && !once.first(a, err, sizeof err)) {
+      std::fprintf(stderr, "cuetrack-synth: %s\n", err);
+      return kExitUsage;
+    }
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
       usage(stdout);
-      return 0;
+      return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : kExitFailed;
     } else if (!std::strcmp(a, "--list")) {
       for (int k = 0; k < sceneCount(); ++k) std::printf("%s\n", sceneName(k));
-      return 0;
+      return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : kExitFailed;
+    } else if (!std::strcmp(a, "--force")) {
+      force = true;
     } else if (!std::strcmp(a, "--scene") && hasValue) {
       scene = argv[++i];
     } else if (!std::strcmp(a, "--out") && hasValue) {
@@ -117,18 +133,19 @@ int main(int argc, char** argv) {
   spec.width = static_cast<int>(width);
   spec.height = static_cast<int>(height);
   auto src = std::make_unique<SyntheticSource>(spec, seed);
-  char err[600] = "";
-  auto sink = openSequenceOut(format, out, scene, src->nominalFps(), err, sizeof err);
+  auto sink = openSequenceOut(format, out, scene, src->nominalFps(), err, sizeof err, force);
   if (!sink) {
     std::fprintf(stderr, "cuetrack-synth: %s\n", err);
     return std::strncmp(err, "unknown format", 14) == 0 ? kExitUsage : kExitFailed;
   }
-  const int n = copySequence(*src, *sink, gSlot, err, sizeof err);
+  cuetrack::platform::installStopSignals();  // an interrupted run removes its partial output
+  const int n =
+      copySequence(*src, *sink, gSlot, err, sizeof err, cuetrack::platform::stopRequested);
   if (n < 0) {
     std::fprintf(stderr, "cuetrack-synth: %s\n", err);
     return kExitFailed;
   }
   std::printf("cuetrack-synth: wrote %d frames of '%s' (%dx%d, seed %llu) to %s (%s)\n", n, scene,
               spec.width, spec.height, seed, out, format);
-  return 0;
+  return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : kExitFailed;
 }

@@ -16,6 +16,8 @@
 
 #include "cuetrack/core/Tracker.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
+#include "cuetrack/platform/OptionOnce.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 
 using namespace cuetrack;
 
@@ -52,16 +54,18 @@ const char* kUsage =
     "The tracker's median update time (and its stages) on a synthetic scene.\n"
     "  --preset NAME   1.1-1.4, 2.1-2.5, best (default 2.1)\n"
     "  --scene NAME    synthetic scene (default moving; cuetrack-synth --list)\n"
-    "  --frames N      updates to time, 0..1999 (default 150)\n"
+    "  --frames N      updates to time, 0..1999 (default 150; 0 times only the set-up,\n"
+    "                  qemu-icount's baseline: the one tool where 0 is a count)\n"
     "  --particles N   particles, 1..2000 (default: the preset's)\n"
     "  --weak M        weak classifiers, 1..32 (default: the preset's)\n"
     "  --icount        read no clock (for qemu-icount: count(N) - count(0), / N)\n"
     "  --hash          print an FNV-1a hash of every frame's box, confidence and state\n"
-    "exit codes: 0 done, 1 bad command line (an unknown --scene too), 2 a frame of the\n"
-    "  scene could not be rendered or the tracker refused its first box\n";
+    "exit codes: 0 done, 1 a frame of the scene could not be rendered, the tracker\n"
+    "  refused its first box, or stdout could not be written, 2 bad command line (an\n"
+    "  unknown --scene, an option given twice too)\n";
 
-constexpr int kExitUsage = 1;
-constexpr int kExitRun = 2;
+constexpr int kExitRun = 1;
+constexpr int kExitUsage = 2;
 
 // The whole of text as a decimal integer in [lo, hi], else an error line and false.
 bool parseCount(const char* option, const char* text, long lo, long hi, int* out) {
@@ -84,12 +88,18 @@ int main(int argc, char** argv) {
   const char* scene = "moving";
   int frames = 150, particles = -1, weak = -1;
   bool icount = false, hash = false;
+  platform::OptionOnce once;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     const bool more = i + 1 < argc;
+    char twice[96];
+    if (a[0] == '-' && !once.first(a, twice, sizeof twice)) {
+      std::fprintf(stderr, "cuetrack-trackspeed: %s\n", twice);
+      return kExitUsage;
+    }
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
       std::fputs(kUsage, stdout);
-      return 0;
+      return platform::stdoutWritten("cuetrack-trackspeed") ? 0 : kExitRun;
     } else if (!std::strcmp(a, "--preset") && more) {
       presetName = argv[++i];
     } else if (!std::strcmp(a, "--scene") && more) {
@@ -170,7 +180,7 @@ int main(int argc, char** argv) {
   if (hash) std::printf("hash %016llx\n", static_cast<unsigned long long>(h));
   if (icount) {
     std::printf("frames %d learned %d (run under qemu-icount; no clock read)\n", n, learned);
-    return 0;
+    return platform::stdoutWritten("cuetrack-trackspeed") ? 0 : kExitRun;
   }
   std::printf(
       "preset %s scene %s %dx%d frames %d particles %d weak %d learned %d\n"
@@ -179,5 +189,5 @@ int main(int argc, char** argv) {
       presetName, scene, spec.width, spec.height, n, cfg.numParticles, cfg.numWeakClassifiers,
       learned, median(totalUs, n), median(featuresUs, n), median(predictUs, n), median(weighUs, n),
       median(learnUs, n), sizeof(Tracker));
-  return 0;
+  return platform::stdoutWritten("cuetrack-trackspeed") ? 0 : kExitRun;
 }

@@ -33,25 +33,4 @@ Particle LostSearch::draw(int i, const Particle& last, int framesLost, const Sea
   return q;
 }
 
-int LostSearch::best(int n, const float* scores, const uint8_t* valid, int* top) {
-  constexpr int k = tuning::search::kRefineWindows;
-  int nt = 0;
-  for (int i = 0; i < n; i += kEvery) {
-    if (valid[i] == 0) continue;
-    int j;
-    if (nt < k)
-      j = nt++;
-    else if (scores[i] > scores[top[k - 1]])
-      j = k - 1;
-    else
-      continue;
-    while (j > 0 && scores[top[j - 1]] < scores[i]) {
-      top[j] = top[j - 1];
-      --j;
-    }
-    top[j] = i;
-  }
-  return nt;
-}
-
 }  // namespace cuetrack

@@ -51,12 +51,8 @@ TrackerConfig presetConfig(Preset preset) {
       c.stateSpace = StateSpace::Cylinder3d;
       c.adaptCylinderSize = true;
       c.lostDetection = true;
-      c.fallbackTo2d = true;
-      c.scaleAnchor2d = true;
-      c.anchorMovesCloud = true;
-      c.modeGuard = true;
-      c.refineSearch = true;
       c.fastMotion = true;
+      c.fallbackTo2d = true;
       c.numWeakClassifiers2d = 32;  // RGB only: as the paper's RGB tests (1.x)
       c.lostAfter2d = 25;           // RGB only: ~1 s of low confidence (partial occlusions)
       break;

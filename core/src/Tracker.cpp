@@ -31,11 +31,9 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
   _clock = clock;
   _motion3d.sizeNoise = _config.adaptCylinderSize ? tuning::cylinder::kSizeNoise : 0.f;
   _sizeFilter.configure(tuning::size2d::kGain, tuning::size2d::kRateGain);
-  _templateAnchor.configure(TemplateAnchor::paramsOf(_config));
   _sizer.configure(tuning::cylinder::kSizeGain, tuning::cylinder::kCentreGain);
   _negatives.configure(NegativeSampler::paramsOf(_config));
   _fast.configure(_config.fastMotion);
-  _depthGuard.configure(_config.learnDepthCheck);
   reset();
 }
 
@@ -157,8 +155,6 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
       _is3d ? tuning::training::kInitialPositives3d : tuning::training::kInitialPositives2d;
   _set.reset(tuning::training::kExamples, anchors);
   addExample(b, true);  // slot 0: the anchor
-  _templateAnchor.clear();
-  if (!_is3d && _config.scaleAnchor2d) _templateAnchor.capture(_channels.tables(), b);
   for (int i = 1; i < anchors; ++i) {
     const float jitter =
         _is3d ? tuning::training::kInitialJitter3d : tuning::training::kInitialJitter2d;
@@ -249,14 +245,9 @@ void Tracker::score(const PixelRect& roi, bool wasLost) {
   }
   _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores,
                        _scanOrder.sort(_boxes, n, roi.y0));
-  if (wasLost && _config.refineSearch) {
-    const FrameTables& t = _channels.tables();
-    LostSearch::refine(n, roi, searchView(), _filter, _boxes, _scores, _valid,
-                       [&](const Box& b) { return _strong.evaluate(t, b); });
-  }
 }
 
-Tracker::Estimate Tracker::estimate(bool wasLost) {
+Tracker::Estimate Tracker::estimate() {
   // Weigh: w = exp(lambda (c - c_max)).
   const int n = _filter.size();
   float cMax = -2.f;
@@ -269,23 +260,7 @@ Tracker::Estimate Tracker::estimate(bool wasLost) {
   Estimate e;
   e.particle = _filter.weightedMean();
   e.box = particleBox(e.particle);
-  float c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
-  if (_config.modeGuard && ModeGuard::split(c, cMax)) {
-    e.particle = _modeGuard.modeMean(_filter, _boxes);
-    e.box = particleBox(e.particle);
-    c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
-  }
-  if (_templateAnchor.active() && !_is3d && !e.box.empty() && !wasLost) {
-    const Box mean = e.box;
-    e.box = _templateAnchor.correct(_channels.tables(), mean);
-    // Applied to the reported box alone, the correction is made afresh each frame to a
-    // mean the classifier keeps pulling away (on BoBoT H a box 3-5% too small, the
-    // template asking for larger on nearly every frame); moved with it, the cloud keeps
-    // it. Only when the classifier is sure enough to learn: after a sudden exposure
-    // change the match is all there is, and it should not carry the cloud.
-    if (_config.anchorMovesCloud && 0.5f * (c + 1.f) >= tuning::kLearnConfidence)
-      TemplateAnchor::moveCloud(mean, e.box, _filter, _boxes);
-  }
+  const float c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
   if (!_is3d && _sizeFilter.enabled() && !e.box.empty()) e.box = _sizeFilter.filter(e.box);
   float concentration = 0.f, wsum = 0.f;
   for (int i = 0; i < n; ++i) {
@@ -297,8 +272,7 @@ Tracker::Estimate Tracker::estimate(bool wasLost) {
   return e;
 }
 
-bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi,
-                     float dtS) {
+bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi) {
   bool occluded = false;
   if (_config.lostDetection) {
     // 3D: the estimate jumped well in front of or behind where the target was last
@@ -312,11 +286,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   // Just found again (on probation): the estimate may be off the target's centre, or
   // on a look-alike; learn only once the detector has confirmed it.
   bool learned = false;
-  // 3D: an estimate well off the confirmed depth (though not yet a jump that counts as a
-  // miss above) is not learnt either: it is the cloud sliding off a low-contrast target.
-  const bool depthSettled =
-      !(_is3d && _config.lostDetection) || _depthGuard.learnable(e.particle.p[2]);
-  if (!e.box.empty() && !occluded && !_lost.onProbation() && depthSettled &&
+  if (!e.box.empty() && !occluded && !_lost.onProbation() &&
       _gate.open(e.confidence, e.concentration, _state)) {
     // Only on frames fit to learn: the estimate is then on the target.
     if (_is3d && _config.adaptCylinderSize && frame.hasDepth() &&
@@ -330,7 +300,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   // moved in depth while hidden).
   const bool confirmed =
       learned || (_state == TrackState::Tracking && (wasLost || _lost.onProbation()));
-  _depthGuard.update(e.particle.p[2], confirmed, _state == TrackState::Tracking, dtS);
+  if (confirmed) _depthGuard.confirm(e.particle.p[2]);
   return learned;
 }
 
@@ -372,9 +342,9 @@ TrackResult Tracker::update(const Frame& frame) {
   if (_is3d && frame.hasDepth()) correctDepths(dtS);
   const uint64_t t3 = now();
   score(roi, wasLost);
-  Estimate e = estimate(wasLost);
+  Estimate e = estimate();
   const uint64_t t4 = now();
-  const bool learned = decide(frame, e, wasLost, roi, dtS);
+  const bool learned = decide(frame, e, wasLost, roi);
   _fast.endFrame(learned);
   const uint64_t t5 = now();
 

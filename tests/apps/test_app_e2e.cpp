@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "Process.hpp"
+#include "Skip.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
@@ -140,8 +141,7 @@ int runOnRecording(const std::string& rec, const std::string& csv, const std::st
 
 TEST_CASE("tracks sent by cuetrack over a pty equal the tracks cuetrack-listen decodes") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -179,8 +179,7 @@ TEST_CASE("tracks sent by cuetrack over a pty equal the tracks cuetrack-listen d
 
 TEST_CASE("commands over a pty start, reset and stop the app; garbage gets ERROR replies") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -258,8 +257,7 @@ TEST_CASE("commands over a pty start, reset and stop the app; garbage gets ERROR
 
 TEST_CASE("cuetrack-listen --send starts tracking and prints the ACK") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -291,8 +289,7 @@ TEST_CASE("cuetrack-listen --send starts tracking and prints the ACK") {
 
 TEST_CASE("garbage from the device side is rejected and counted by the listener") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -343,8 +340,7 @@ TEST_CASE("garbage from the device side is rejected and counted by the listener"
 
 TEST_CASE("when the serial peer goes away the app reports it, keeps tracking, reconnects") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -404,13 +400,13 @@ TEST_CASE("cuetrack runs on a fakenect recording and takes the target from its g
   CHECK(rows[1].find(",tracking,") != std::string::npos);
   CHECK(rows[8].find(",idle,") == std::string::npos);
 
-  // A broken path gives one line naming it and exit code 2.
+  // A broken path gives one line naming it and exit code 1 (a source failure).
   ChildProcess bad;
   const std::string missing = tmp.file("nothing-here");
   const char* bargv[] = {CUETRACK_APP_BIN, "--source", missing.c_str(), "--quiet", nullptr};
   REQUIRE(bad.start(bargv, nullptr, appErr.c_str()));
   REQUIRE(bad.wait(30000, &status));
-  CHECK(status == 2);
+  CHECK(status == 1);
   CHECK(slurp(appErr).find(missing) != std::string::npos);
 }
 
@@ -430,7 +426,7 @@ TEST_CASE("a recording whose frames change size, or whose ground truth is refuse
   const std::string csv = tmp.file("out.csv"), appErr = tmp.file("app.err");
   int status = runOnRecording(rec, csv, appErr);
   INFO(slurp(appErr));
-  CHECK(status == 2);  // source failed: the tracker would skip the frame, saying "tracking"
+  CHECK(status == 1);  // source failed: the tracker would skip the frame, saying "tracking"
   CHECK(slurp(appErr).find(rec) != std::string::npos);
   CHECK(lines(slurp(csv)).size() <= 6);  // header + frames 0..4 at most
 
@@ -445,10 +441,9 @@ TEST_CASE("a recording whose frames change size, or whose ground truth is refuse
         std::string::npos);
 }
 
-TEST_CASE("cuetrack-listen ends cleanly when the port closes") {
+TEST_CASE("cuetrack-listen exits 1 naming the port when it goes away") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -461,8 +456,248 @@ TEST_CASE("cuetrack-listen ends cleanly when the port closes") {
   pty.stop();
   int status = -1;
   REQUIRE(listener.wait(30000, &status));
+  INFO(slurp(listenErr));
+  CHECK(status == 1);
+  CHECK(slurp(listenErr).find(std::string(pty.b()) + ": the port went away") != std::string::npos);
+}
+
+TEST_CASE("cuetrack-listen --reconnect waits for the port and reports the seq gap across it") {
+  if (!haveSocat()) {
+    WARN("socat not installed: skipped");
+    return;
+  }
+  TempDir tmp;
+  PtyPair pty;
+  REQUIRE(pty.start());
+  const std::string listenErr = tmp.file("l.err"), listenOut = tmp.file("l.out");
+  ChildProcess listener;
+  const char* largv[] = {CUETRACK_LISTEN_BIN, pty.b(), "--reconnect", nullptr};
+  REQUIRE(listener.start(largv, listenOut.c_str(), listenErr.c_str()));
+  REQUIRE(waitFor([&] { return slurp(listenErr).find("listening") != std::string::npos; }, 10000));
+  // The device: heartbeats seq 0..2, then the line goes, then seq 10.
+  auto heartbeat = [](uint32_t seq, std::vector<uint8_t>* wire) {
+    ctp_heartbeat_t h{};
+    h.seq = seq;
+    uint8_t w[CTP_MAX_WIRE];
+    const size_t n = ctp_encode_heartbeat(&h, w, sizeof w);
+    wire->insert(wire->end(), w, w + n);
+  };
+  {
+    HostPort device;
+    REQUIRE(device.port.open(pty.a(), 115200));
+    std::vector<uint8_t> wire{0};
+    for (uint32_t s = 0; s < 3; ++s) heartbeat(s, &wire);
+    device.sendRaw(wire.data(), wire.size());
+    REQUIRE(waitFor([&] { return lines(slurp(listenOut)).size() >= 3; }, 10000));
+  }
+  pty.stop();
+  REQUIRE(
+      waitFor([&] { return slurp(listenErr).find("waiting for it") != std::string::npos; }, 10000));
+  CHECK(listener.running());
+  REQUIRE(pty.start());
+  REQUIRE(waitFor([&] { return slurp(listenErr).find("the port is back") != std::string::npos; },
+                  10000));
+  {
+    HostPort device;
+    REQUIRE(device.port.open(pty.a(), 115200));
+    std::vector<uint8_t> wire{0};
+    heartbeat(10, &wire);
+    device.sendRaw(wire.data(), wire.size());
+    REQUIRE(waitFor([&] { return slurp(listenErr).find("seq 10 after 2") != std::string::npos; },
+                    10000));
+  }
+  listener.signal(SIGTERM);
+  int status = -1;
+  REQUIRE(listener.wait(30000, &status));
+  const std::string err = slurp(listenErr);
+  INFO(err);
   CHECK(status == 0);
-  CHECK(slurp(listenErr).find("port closed") != std::string::npos);
+  CHECK(err.find("seq 10 after 2: 7 messages lost") != std::string::npos);
+  CHECK(err.find("seq gaps 7 (seq first 0 last 10, device restarts 0)") != std::string::npos);
+}
+
+TEST_CASE("a restarted listener with --state reports the messages lost while it was away") {
+  if (!haveSocat()) {
+    WARN("socat not installed: skipped");
+    return;
+  }
+  TempDir tmp;
+  PtyPair pty;
+  REQUIRE(pty.start());
+  const std::string state = tmp.file("listen.state");
+  HostPort device;
+  REQUIRE(device.port.open(pty.a(), 115200));
+  auto send = [&](uint32_t from, uint32_t to) {
+    std::vector<uint8_t> wire{0};
+    for (uint32_t s = from; s <= to; ++s) {
+      ctp_heartbeat_t h{};
+      h.seq = s;
+      uint8_t w[CTP_MAX_WIRE];
+      const size_t n = ctp_encode_heartbeat(&h, w, sizeof w);
+      wire.insert(wire.end(), w, w + n);
+    }
+    device.sendRaw(wire.data(), wire.size());
+  };
+  auto runListener = [&](const std::string& errPath, uint32_t from, uint32_t to) {
+    ChildProcess listener;
+    const char* largv[] = {CUETRACK_LISTEN_BIN, pty.b(), "--state", state.c_str(), nullptr};
+    REQUIRE(listener.start(largv, "/dev/null", errPath.c_str()));
+    REQUIRE(waitFor([&] { return slurp(errPath).find("listening") != std::string::npos; }, 10000));
+    send(from, to);
+    const std::string last = "last_seq " + std::to_string(to);
+    REQUIRE(waitFor([&] { return slurp(state).find(last) == 0; }, 10000));
+    listener.signal(SIGTERM);
+    int status = -1;
+    REQUIRE(listener.wait(30000, &status));
+    CHECK(status == 0);
+  };
+  runListener(tmp.file("1.err"), 0, 4);
+  // Messages 5..65 went out while no listener ran (the device numbers every message it
+  // sends, read or not): the next run starts at 66.
+  runListener(tmp.file("2.err"), 66, 70);
+  const std::string err = slurp(tmp.file("2.err"));
+  INFO(err);
+  CHECK(err.find("the last run ended after seq 4") != std::string::npos);
+  CHECK(err.find("seq 66 after 4: 61 messages lost") != std::string::npos);
+  CHECK(err.find("seq gaps 61 (seq first 66 last 70") != std::string::npos);
+}
+
+TEST_CASE("two listeners on one port: the second is refused, naming the first's PID") {
+  if (!haveSocat()) {
+    WARN("socat not installed: skipped");
+    return;
+  }
+  TempDir tmp;
+  PtyPair pty;
+  REQUIRE(pty.start());
+  const std::string err1 = tmp.file("1.err"), err2 = tmp.file("2.err");
+  ChildProcess first;
+  const char* argv1[] = {CUETRACK_LISTEN_BIN, pty.b(), nullptr};
+  REQUIRE(first.start(argv1, "/dev/null", err1.c_str()));
+  REQUIRE(waitFor([&] { return slurp(err1).find("listening") != std::string::npos; }, 10000));
+  ChildProcess second;
+  REQUIRE(second.start(argv1, "/dev/null", err2.c_str()));
+  int status = -1;
+  REQUIRE(second.wait(30000, &status));
+  const std::string text = slurp(err2);
+  INFO(text);
+  CHECK(status == 1);
+  CHECK(text.find(std::string(pty.b()) + ": in use by") != std::string::npos);
+  CHECK(lines(text).size() == 1);  // one line
+  // Where /run/lock is writable the lock file names the holder.
+  if (access("/run/lock", W_OK) == 0)
+    CHECK(text.find("in use by process " + std::to_string(first.pid())) != std::string::npos);
+  // cuetrack itself is refused the same way.
+  ChildProcess app;
+  const std::string appErr = tmp.file("app.err");
+  const char* aargv[] = {CUETRACK_APP_BIN, "--serial", pty.b(), "--frames", "5", nullptr};
+  REQUIRE(app.start(aargv, "/dev/null", appErr.c_str()));
+  REQUIRE(app.wait(kAppTimeoutMs, &status));
+  CHECK(status == 3);
+  CHECK(slurp(appErr).find(std::string(pty.b()) + ": in use by") != std::string::npos);
+  first.signal(SIGTERM);
+  REQUIRE(first.wait(30000, &status));
+}
+
+TEST_CASE("SIGHUP ends cuetrack cleanly, with its final line, like SIGTERM") {
+  TempDir tmp;
+  const std::string err = tmp.file("err"), csv = tmp.file("t.csv");
+  ChildProcess app;
+  const char* argv[] = {CUETRACK_APP_BIN, "--frames", "1000000",   "--realtime",
+                        "--stdout",       "--out",    csv.c_str(), nullptr};
+  REQUIRE(app.start(argv, "/dev/null", err.c_str()));
+  REQUIRE(waitFor([&] { return slurp(err).find("fps") != std::string::npos; }, kAppTimeoutMs));
+  app.signal(SIGHUP);
+  int status = -1;
+  REQUIRE(app.wait(30000, &status));
+  INFO(slurp(err));
+  CHECK(status == 0);
+  CHECK(slurp(err).find("stopped after") != std::string::npos);
+  CHECK(slurp(err).find("(signal)") != std::string::npos);
+  CHECK(lines(slurp(csv)).size() > 1);  // the rows of the frames before the signal
+}
+
+TEST_CASE("a damaged video frame stops cuetrack naming it, or is skipped and counted") {
+  TempDir tmp;
+  const std::string avi = tmp.file("Vid_D_damaged.avi");
+  {
+    ChildProcess synth;
+    const char* sargv[] = {CUETRACK_SYNTH_BIN, "--scene", "moving", "--frames",  "12",
+                           "--format",         "avi",     "--out",  avi.c_str(), nullptr};
+    REQUIRE(synth.start(sargv, "/dev/null", tmp.file("synth.err").c_str()));
+    int status = -1;
+    REQUIRE(synth.wait(kAppTimeoutMs, &status));
+    if (status != 0) CUETRACK_SKIP("this build writes no .avi (no OpenCV)");
+  }
+  // Flip bits inside the JPEG data of frame 7 (the 8th "00dc" chunk of the movi list).
+  static char buf[8 << 20];
+  FILE* f = std::fopen(avi.c_str(), "rb");
+  REQUIRE(f != nullptr);
+  const size_t n = std::fread(buf, 1, sizeof buf, f);
+  std::fclose(f);
+  std::string data(buf, n);
+  size_t at = data.find("movi");
+  REQUIRE(at != std::string::npos);
+  for (int k = 0; k <= 7; ++k) {
+    at = data.find("00dc", at + 4);
+    REQUIRE(at != std::string::npos);
+  }
+  uint32_t size = 0;
+  std::memcpy(&size, data.data() + at + 4, 4);
+  REQUIRE(size > 2000);
+  for (uint32_t i = size / 2; i < size / 2 + 600; i += 7) data[at + 8 + i] ^= 0x5a;
+  f = std::fopen(avi.c_str(), "wb");
+  REQUIRE(f != nullptr);
+  REQUIRE(std::fwrite(data.data(), 1, data.size(), f) == data.size());
+  std::fclose(f);
+
+  const std::string err = tmp.file("err");
+  ChildProcess strict;
+  const char* argv1[] = {CUETRACK_APP_BIN, "--source", avi.c_str(), "--quiet", nullptr};
+  REQUIRE(strict.start(argv1, "/dev/null", err.c_str()));
+  int status = -1;
+  REQUIRE(strict.wait(kAppTimeoutMs, &status));
+  INFO(slurp(err));
+  CHECK(status == 1);
+  CHECK(slurp(err).find(avi + ": frame 7 is damaged") != std::string::npos);
+
+  const std::string csv = tmp.file("t.csv");
+  ChildProcess skipping;
+  const char* argv2[] = {CUETRACK_APP_BIN, "--source",  avi.c_str(), "--skip-bad-frames",
+                         "--out",          csv.c_str(), "--quiet",   nullptr};
+  REQUIRE(skipping.start(argv2, "/dev/null", err.c_str()));
+  REQUIRE(skipping.wait(kAppTimeoutMs, &status));
+  INFO(slurp(err));
+  CHECK(status == 0);
+  CHECK(slurp(err).find("1 damaged frames skipped") != std::string::npos);  // even --quiet
+  CHECK(lines(slurp(csv)).size() == 1 + 11);  // header + the 11 good frames
+}
+
+TEST_CASE("a tool whose stdout cannot be written (/dev/full) fails with one line") {
+  TempDir tmp;
+  const std::string err = tmp.file("err");
+  const std::string rec = tmp.file("rec");
+  const std::vector<std::vector<const char*>> cmds = {
+      {CUETRACK_SYNTH_BIN, "--list"},
+      {CUETRACK_SYNTH_BIN, "--help"},
+      {CUETRACK_TRACKSPEED_BIN, "--frames", "1", "--particles", "50"},
+      {CUETRACK_CONVERT_BIN, "synth:moving:2", "--bench"},
+      {CUETRACK_SYNTH_BIN, "--scene", "moving", "--frames", "2", "--out", rec.c_str()},
+      {CUETRACK_APP_BIN, "--frames", "2", "--quiet"},
+      {CUETRACK_APP_BIN, "--help"},
+  };
+  for (const auto& c : cmds) {
+    std::vector<const char*> argv = c;
+    argv.push_back(nullptr);
+    ChildProcess p;
+    REQUIRE(p.start(argv.data(), "/dev/full", err.c_str()));
+    int status = -1;
+    REQUIRE(p.wait(kAppTimeoutMs, &status));
+    const std::string text = slurp(err);
+    INFO(c[0] << " " << c[1] << " -> " << text);
+    CHECK(status != 0);
+    CHECK(text.find("stdout") != std::string::npos);
+  }
 }
 
 TEST_CASE("documented exit codes, each with one line naming what is at fault") {
@@ -476,34 +711,49 @@ TEST_CASE("documented exit codes, each with one line naming what is at fault") {
   const std::vector<Case> cases = {
       {{CUETRACK_APP_BIN, "--help"}, 0, ""},
       {{CUETRACK_APP_BIN, "--frames", "2", "--quiet"}, 0, ""},
-      {{CUETRACK_APP_BIN, "--bogus"}, 1, "unknown option '--bogus'"},
-      {{CUETRACK_APP_BIN, "--config", "9.9"}, 1, "--config 9.9: unknown preset"},
-      {{CUETRACK_APP_BIN, "--serial", "/dev/null", "--baud", "300"}, 1, "--baud 300"},
-      {{CUETRACK_APP_BIN, "--baud", "1234", "--frames", "2"}, 1, "--baud 1234"},
-      {{CUETRACK_APP_BIN, "--source", "synth:nosuchscene"}, 2, "synth:nosuchscene"},
+      {{CUETRACK_APP_BIN, "--bogus"}, 2, "unknown option '--bogus'"},
+      {{CUETRACK_APP_BIN, "--config", "9.9"}, 2, "--config 9.9: unknown preset"},
+      {{CUETRACK_APP_BIN, "--serial", "/dev/null", "--baud", "300"}, 2, "--baud 300"},
+      {{CUETRACK_APP_BIN, "--baud", "1234", "--frames", "2"}, 2, "--baud 1234"},
+      {{CUETRACK_APP_BIN, "--source", "synth:nosuchscene"}, 1, "synth:nosuchscene"},
       {{CUETRACK_APP_BIN, "--serial", "/nonexistent/tty"}, 3, "/nonexistent/tty: cannot open"},
       {{CUETRACK_APP_BIN, "--out", "/dev/full", "--frames", "2"}, 3, "/dev/full"},
       {{CUETRACK_APP_BIN, "--box", "5000,5000,10,10", "--frames", "2"}, 4, "--box 5000,5000,10,10"},
-      {{CUETRACK_APP_BIN, "--box", "1,1,inf,20", "--frames", "2"}, 1, "--box 1,1,inf,20: expected"},
-      {{CUETRACK_APP_BIN, "--box", "1,1,1e30,1e30", "--frames", "2"}, 1, "--box 1,1,1e30,1e30:"},
-      {{CUETRACK_APP_BIN, "--box", "nan,1,10,10", "--frames", "2"}, 1, "--box nan,1,10,10:"},
-      {{CUETRACK_APP_BIN, "--seed", "-1", "--frames", "2"}, 1, "--seed -1"},
-      {{CUETRACK_APP_BIN, "--baud", "0", "--frames", "2"}, 1, "--baud 0: unsupported"},
+      {{CUETRACK_APP_BIN, "--box", "1,1,inf,20", "--frames", "2"}, 2, "--box 1,1,inf,20: expected"},
+      {{CUETRACK_APP_BIN, "--box", "1,1,1e30,1e30", "--frames", "2"}, 2, "--box 1,1,1e30,1e30:"},
+      {{CUETRACK_APP_BIN, "--box", "nan,1,10,10", "--frames", "2"}, 2, "--box nan,1,10,10:"},
+      {{CUETRACK_APP_BIN, "--seed", "-1", "--frames", "2"}, 2, "--seed -1"},
+      {{CUETRACK_APP_BIN, "--baud", "0", "--frames", "2"}, 2, "--baud 0: unsupported"},
       {{CUETRACK_SYNTH_BIN, "--scene", "moving", "--out", syn.c_str(), "--seed", "-1"},
        2,
        "--seed '-1'"},
       {{CUETRACK_TRACKSPEED_BIN, "--help"}, 0, ""},
       {{CUETRACK_TRACKSPEED_BIN, "--frames", "1", "--particles", "50"}, 0, ""},
-      {{CUETRACK_TRACKSPEED_BIN, "--particles", "abc"}, 1, "--particles 'abc'"},
-      {{CUETRACK_TRACKSPEED_BIN, "--particles", "-1"}, 1, "--particles '-1'"},
-      {{CUETRACK_TRACKSPEED_BIN, "--particles", "0"}, 1, "--particles '0'"},
-      {{CUETRACK_TRACKSPEED_BIN, "--particles", "99999999"}, 1, "--particles '99999999'"},
-      {{CUETRACK_TRACKSPEED_BIN, "--frames", "abc"}, 1, "--frames 'abc'"},
-      {{CUETRACK_TRACKSPEED_BIN, "--weak", "33"}, 1, "--weak '33'"},
-      {{CUETRACK_TRACKSPEED_BIN, "--scene", "nowhere"}, 1, "--scene 'nowhere'"},
-      {{CUETRACK_LISTEN_BIN}, 1, "missing PORT"},
-      {{CUETRACK_LISTEN_BIN, "/dev/null", "--send", "jump"}, 1, "command 'jump'"},
-      {{CUETRACK_LISTEN_BIN, "/nonexistent/tty"}, 2, "/nonexistent/tty: cannot open"},
+      {{CUETRACK_TRACKSPEED_BIN, "--particles", "abc"}, 2, "--particles 'abc'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--particles", "-1"}, 2, "--particles '-1'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--particles", "0"}, 2, "--particles '0'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--particles", "99999999"}, 2, "--particles '99999999'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--frames", "abc"}, 2, "--frames 'abc'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--weak", "33"}, 2, "--weak '33'"},
+      {{CUETRACK_TRACKSPEED_BIN, "--scene", "nowhere"}, 2, "--scene 'nowhere'"},
+      {{CUETRACK_LISTEN_BIN}, 2, "missing PORT"},
+      {{CUETRACK_LISTEN_BIN, "/dev/null", "--send", "jump"}, 2, "command 'jump'"},
+      {{CUETRACK_LISTEN_BIN, "/nonexistent/tty"}, 1, "/nonexistent/tty: cannot open"},
+      // A newline in an argument does not split the error line.
+      {{CUETRACK_APP_BIN, "--source", "no\nsuch"}, 1, "no?such"},
+      // One convention (README): 2 for any bad command line, in every tool.
+      {{CUETRACK_APP_BIN, "--frames", "0"}, 2, "--frames 0: expected a count >= 1"},
+      {{CUETRACK_APP_BIN, "--box", "1,1,20,20", "--frames", "2", "--box", "5,5,20,20"},
+       2,
+       "--box given twice"},
+      {{CUETRACK_LISTEN_BIN, "/dev/null", "--baud", "9600", "--baud", "19200"},
+       2,
+       "--baud given twice"},
+      {{CUETRACK_LISTEN_BIN, "/dev/null", "--tracks", "0"}, 2, "--tracks 0"},
+      {{CUETRACK_TRACKSPEED_BIN, "--hash", "--hash"}, 2, "--hash given twice"},
+      {{CUETRACK_SYNTH_BIN, "--scene", "moving", "--scene", "box", "--out", syn.c_str()},
+       2,
+       "--scene given twice"},
   };
   for (const Case& c : cases) {
     std::vector<const char*> argv = c.args;

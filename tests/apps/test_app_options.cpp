@@ -95,6 +95,35 @@ TEST_CASE("bad command lines give one line naming the option") {
   CHECK(err.find("unknown option '--what'") == 0);
   CHECK(parse({"--help"}, &o, &err) == ParseResult::Help);
   CHECK(std::string(usageText()).find("exit codes") != std::string::npos);
+  // 0 frames would run nothing and report success, as bench and synth refuse.
+  CHECK(parse({"--frames", "0"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--frames 0: expected a count >= 1");
+  CHECK(parse({"--frames", "1"}, &o, &err) == ParseResult::Run);
+}
+
+TEST_CASE("an option given twice is an error, not 'the last one wins'") {
+  AppOptions o;
+  std::string err;
+  CHECK(parse({"--box", "1,2,30,40", "--frames", "5", "--box", "5,6,30,40"}, &o, &err) ==
+        ParseResult::Error);
+  CHECK(err == "--box given twice");
+  CHECK(parse({"--quiet", "--quiet"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--quiet given twice");
+  // Two different --mavlink-* ids are two options.
+  CHECK(parse({"--protocol", "mavlink", "--serial", "/dev/null", "--mavlink-sysid", "2",
+               "--mavlink-compid", "3"},
+              &o, &err) == ParseResult::Run);
+  CHECK(parse({"--mavlink-sysid", "2", "--mavlink-sysid", "3"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--mavlink-sysid given twice");
+}
+
+TEST_CASE("--skip-bad-frames is off unless given") {
+  AppOptions o;
+  std::string err;
+  REQUIRE(parse({"--frames", "3"}, &o, &err) == ParseResult::Run);
+  CHECK_FALSE(o.skipBadFrames);
+  REQUIRE(parse({"--skip-bad-frames"}, &o, &err) == ParseResult::Run);
+  CHECK(o.skipBadFrames);
 }
 
 TEST_CASE("--source kinect:MODE takes both or colour; depth alone is refused, naming it") {

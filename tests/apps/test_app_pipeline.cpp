@@ -475,6 +475,19 @@ TEST_CASE("a heartbeat goes out after 1 s without any message") {
   CHECK(rig.host.drain().empty());  // not again until another second passes
 }
 
+TEST_CASE("on a congested line a heartbeat is tried once a second, and every loss is counted") {
+  static Rig rig(150, true);     // 5 s at 30 fps
+  rig.cable.setCapacityAtoB(0);  // the peer stopped reading: nothing leaves the queue
+  for (int i = 0; i < 150; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  const platform::LinkStats& s = rig.link.stats();
+  // Every frame sent a TRACK (queued or dropped); the rest are heartbeats. The last
+  // successful write never moves, so only the clock may pace them: 1, 2, 3, 4 s.
+  const uint32_t heartbeats = s.sent + s.txDropped - 150;
+  CHECK(heartbeats >= 3);
+  CHECK(heartbeats <= 5);
+  CHECK(s.txDropped > 100);  // most tracks lost, each counted once
+}
+
 TEST_CASE("while the camera stalls, heartbeats still go out and commands are answered") {
   static Rig rig(10, true);
   REQUIRE(rig.step() == StepResult::Continue);

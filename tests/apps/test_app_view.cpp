@@ -335,7 +335,7 @@ TEST_CASE("--video writes every frame with its track drawn; OpenCV reads it back
   CHECK(e == "cuetrack: --video /nonexistent/x.avi: cannot write: No such file or directory\n");
 }
 
-TEST_CASE("--show and --select without a display fail in one line, exit 1") {
+TEST_CASE("--show and --select without a display fail in one line, exit 2 (usage)") {
   TempDir tmp;
   const std::string out = tmp.file("out.txt"), err = tmp.file("err.txt");
   const char* display = std::getenv("DISPLAY");
@@ -343,7 +343,7 @@ TEST_CASE("--show and --select without a display fail in one line, exit 1") {
   unsetenv("DISPLAY");
   for (const char* opt : {"--show", "--select"}) {
     INFO(opt);
-    CHECK(run({CUETRACK_APP_BIN, "--source", "synth:moving", "--frames", "5", opt}, out, err) == 1);
+    CHECK(run({CUETRACK_APP_BIN, "--source", "synth:moving", "--frames", "5", opt}, out, err) == 2);
     const std::string e = slurp(err);
     CHECK(std::count(e.begin(), e.end(), '\n') == 1);
     CHECK(contains(e, opt));
@@ -353,7 +353,7 @@ TEST_CASE("--show and --select without a display fail in one line, exit 1") {
   // A display named but not there: Qt would abort the process; we say so in one line.
   setenv("DISPLAY", ":4093", 1);
   CHECK(run({CUETRACK_APP_BIN, "--source", "synth:moving", "--frames", "5", "--show"}, out, err) ==
-        1);
+        2);
   const std::string e = slurp(err);
   CHECK(std::count(e.begin(), e.end(), '\n') == 1);
   CHECK((contains(e, "cannot connect to display :4093") || contains(e, "not built with OpenCV")));

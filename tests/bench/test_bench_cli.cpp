@@ -11,6 +11,8 @@
 #include <string>
 
 #include "MiniJson.hpp"
+#include "SharedData.hpp"
+#include "Skip.hpp"
 
 namespace {
 
@@ -127,10 +129,10 @@ TEST_CASE("ablations of best (a beyond-the-paper switch off) run as configuratio
   CHECK(r.exitCode == 0);
   CHECK(r.out.find("best-nofastm") != std::string::npos);
   CHECK(r.out.find("4 frames left out") != std::string::npos);
-  // The cloud following the template anchor acts in 2D only: best on RGB alone.
-  r = runBench("synth:moving --frames 6 --runs 1 --quiet --rgb-only --config best-noanchorcloud");
-  CHECK(r.exitCode == 0);
-  CHECK(r.out.find("best-noancho") != std::string::npos);
+  // A removed switch is refused with the list of those there are.
+  r = runBench("synth:moving --frames 6 --runs 1 --quiet --config best-nomodeguard");
+  CHECK(r.exitCode == 2);
+  CHECK(r.out.find("unknown configuration 'best-nomodeguard'") != std::string::npos);
 }
 
 TEST_CASE("3D presets place a synthetic target's centre within centimetres; 2D ones report none") {
@@ -239,13 +241,8 @@ TEST_CASE("a broken video gets one line naming it") {
 }
 
 TEST_CASE("RGB-D configurations on RGB-only BoBoT video are reported as unable to run") {
-  const char* env = std::getenv("CUETRACK_SHARED_DIR");
-  const std::string video =
-      std::string(env ? env : CUETRACK_SHARED_DIR) + "/data/bobot/Vid_C_juice.avi";
-  if (!std::ifstream(video)) {
-    WARN("skipped: " << video << " not found (set CUETRACK_SHARED_DIR)");
-    return;
-  }
+  const std::string video = cuetrack::test::sharedDataDir() + "/bobot/Vid_C_juice.avi";
+  if (!std::ifstream(video)) CUETRACK_SKIP("shared data absent (" << video << ")");
   const Run r = runBench(video + " --frames 6 --runs 1 --quiet --config 2.1,1.1");
   CHECK(r.exitCode == 0);  // a finding, not a broken sequence
   CHECK(r.out.find("cuetrack 2.1 on Vid_C_juice: cannot run") != std::string::npos);

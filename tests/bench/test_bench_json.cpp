@@ -12,9 +12,10 @@ using namespace cuetrack::bench;
 
 namespace {
 
-const std::vector<std::string> kFigureKeys = {"frames",    "overlap",   "hit",         "pascal",
-                                              "center_px", "center_mm", "center_z_mm", "ms_median",
-                                              "ms_mean",   "allocs"};
+const std::vector<std::string> kFigureKeys = {
+    "frames",         "overlap",      "hit",     "pascal",   "center_px", "center_mm",
+    "center_z_mm",    "ms_median",    "ms_mean", "allocs",   "auc",       "precision20",
+    "overlap_spread", "overlap_runs", "success", "precision"};
 
 EntryResult makeEntry(const std::string& tracker, const std::string& config, bool secondRan) {
   EntryResult e;
@@ -34,7 +35,9 @@ EntryResult makeEntry(const std::string& tracker, const std::string& config, boo
   a.figures.msMedian = 1.5;
   a.figures.msMean = 2.0;
   a.figures.allocs = 0;
+  a.skippedFrames = 3;
   SequenceResult b = a;
+  b.skippedFrames = 0;
   b.name = "seq \"two\"";
   b.figures.overlap = 60;
   b.figures.centerPx = std::nan("");
@@ -56,6 +59,7 @@ void checkEntry(const minijson::Value& v, const std::string& tracker) {
   for (const minijson::Value& s : seqs->items) {
     std::vector<std::string> want = {"name"};
     want.insert(want.end(), kFigureKeys.begin(), kFigureKeys.end());
+    want.push_back("skipped_frames");
     CHECK(s.keys() == want);
     for (const char* k : {"overlap", "hit", "pascal"}) {
       const minijson::Value* p = s.get(k);
@@ -86,6 +90,9 @@ TEST_CASE("one tracker: the file holds that object, with the schema's keys in or
   const minijson::Value& s1 = v.get("sequences")->items[1];
   CHECK(s1.get("name")->s == "seq \"two\"");
   CHECK(s1.get("center_px")->kind == minijson::Value::Null);
+  // Frames the reader skipped as damaged are counted per sequence.
+  CHECK(s0.get("skipped_frames")->n == 3);
+  CHECK(s1.get("skipped_frames")->n == 0);
   // Millimetres with one decimal (docs/bench-json.md): rounded, not cut or left long.
   CHECK(text.find("\"center_mm\": 12.5, \"center_z_mm\": 3.3,") != std::string::npos);
   CHECK(s0.get("center_mm")->n == Approx(12.5));

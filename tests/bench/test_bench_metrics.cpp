@@ -142,3 +142,43 @@ TEST_CASE("median of odd, even and empty sets") {
   CHECK(median({4, 1, 3, 2}) == Approx(2.5));
   CHECK(median({}) == 0);
 }
+
+TEST_CASE("success and precision curves, hand-computed: OTB's thresholds, lost frames miss") {
+  RunAccumulator acc;
+  const Box gt{0, 0, 10, 10};
+  acc.add(gt, gt);                   // overlap 1, distance 0
+  acc.add(gt, Box{5, 0, 10, 10});    // overlap 1/3, distance 5
+  acc.add(gt, Box{});                // lost: overlap 0, no distance
+  acc.add(gt, Box{100, 0, 10, 10});  // overlap 0, distance 100
+  const RunFigures r = acc.figures();
+  CHECK(r.success[0] == Approx(0.5));   // overlap > 0: two of four
+  CHECK(r.success[6] == Approx(0.5));   // > 0.30: 1 and 1/3
+  CHECK(r.success[7] == Approx(0.25));  // > 0.35: only the exact box
+  CHECK(r.success[20] == Approx(0.0));  // > 1: none
+  CHECK(r.precision[0] == Approx(0.25));
+  CHECK(r.precision[4] == Approx(0.25));
+  CHECK(r.precision[5] == Approx(0.5));   // <= 5 px
+  CHECK(r.precision[50] == Approx(0.5));  // 100 px and the lost frame never count
+  // AUC is the mean of the 21 points: 0.5 x 7 (0 .. 0.30) + 0.25 x 13 (0.35 .. 0.95) + 0.
+  const Figures f = aggregateRuns({r}, {}, {});
+  CHECK(f.auc == Approx(100.0 * (0.5 * 7 + 0.25 * 13) / 21));
+  CHECK(f.precision20 == Approx(50.0));
+}
+
+TEST_CASE("seed spread: the sample s.d. of the per-seed averages over sequences") {
+  RunFigures a1, a2, b1, b2;
+  a1.overlapPct = 60;
+  a2.overlapPct = 70;
+  b1.overlapPct = 80;
+  b2.overlapPct = 80;
+  const Figures a = aggregateRuns({a1, a2}, {}, {});
+  const Figures b = aggregateRuns({b1, b2}, {}, {});
+  CHECK(a.overlapSpread() == Approx(std::sqrt(50.0)));  // 60, 70
+  CHECK(b.overlapSpread() == 0.0);
+  const Figures avg = averageFigures({a, b});
+  REQUIRE(avg.runOverlap.size() == 2);
+  CHECK(avg.runOverlap[0] == Approx(70.0));  // seed 1: (60 + 80) / 2
+  CHECK(avg.runOverlap[1] == Approx(75.0));
+  CHECK(avg.overlapSpread() == Approx(std::sqrt(12.5)));
+  CHECK(aggregateRuns({a1}, {}, {}).overlapSpread() == 0.0);  // one run: no spread
+}

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "Outputs.hpp"
+#include "PeerCache.hpp"
 #include "Report.hpp"
 #include "Runner.hpp"
 #include "TrackerAdapters.hpp"
@@ -484,4 +485,52 @@ TEST_CASE("OpenCV KCF follows a clearly visible moving target on the same frames
   CHECK(r.figures.frames == 29);
   CHECK(r.figures.overlap > 60.0);
   CHECK(r.figures.hit > 90.0);
+}
+
+TEST_CASE("peer cache: a result comes back as it was; another sequence, seed or file misses") {
+  MovingSquareSource src(11, -1);
+  const Sequence seq = load(src);
+  TrackerFactory factory = [&](const EntrySpec&, std::string*) {
+    return std::unique_ptr<BenchTracker>(std::make_unique<ShiftTracker>(12.f));
+  };
+  RunOptions options;
+  Progress quiet(false);
+  const EntrySpec spec{"opencv-kcf", "default", 2};
+  const SequenceResult r = runEntry(spec, seq, factory, options, quiet);
+  REQUIRE(r.ran);
+  char dir[] = "/tmp/cuetrack-peer-cache-XXXXXX";
+  REQUIRE(mkdtemp(dir) != nullptr);
+  const std::string path = peerCachePath(dir, spec, seq, 1);
+  std::string err;
+  REQUIRE(savePeerResult(path, r, &err));
+  SequenceResult back;
+  back.name = seq.name;
+  REQUIRE(loadPeerResult(path, &back));
+  CHECK(back.ran);
+  CHECK(back.figures.overlap == r.figures.overlap);  // bit for bit (%.17g)
+  CHECK(back.figures.centerPx == r.figures.centerPx);
+  CHECK(back.figures.auc == r.figures.auc);
+  CHECK(back.figures.runOverlap == r.figures.runOverlap);
+  CHECK(back.frameIndex == r.frameIndex);
+  CHECK(back.meanOverlap == r.meanOverlap);
+  CHECK(back.firstRunBoxes.size() == r.firstRunBoxes.size());
+  CHECK(std::equal(std::begin(r.figures.precision), std::end(r.figures.precision),
+                   std::begin(back.figures.precision)));
+  // Another seed, or other frames, give another key.
+  CHECK(peerCachePath(dir, spec, seq, 2) != path);
+  Sequence shorter = seq;
+  shorter.frames.pop_back();
+  CHECK(peerCachePath(dir, spec, shorter, 1) != path);
+  Sequence repainted = seq;
+  repainted.frames[3].rgb[0].r ^= 0xff;
+  CHECK(peerCachePath(dir, spec, repainted, 1) != path);
+  // A damaged file is a miss, not a result.
+  {
+    std::ofstream damaged(path);
+    damaged << "cuetrack-peer-cache 1\nframes 10 figures 1 2\n";
+  }
+  SequenceResult none;
+  CHECK_FALSE(loadPeerResult(path, &none));
+  CHECK_FALSE(loadPeerResult(std::string(dir) + "/absent.txt", &none));
+  std::remove(path.c_str());
 }

@@ -1,6 +1,6 @@
 // The beyond-the-paper components the tracker wires, each on its own: the depth guard,
-// the mode guard, fast motion's jumps, the lost search and its climb, and the small
-// helpers (the depth median that places a new 3D track, the scan order).
+// fast motion's jumps, the lost search, and the small helpers (the depth median that places a new
+// 3D track, the scan order, the small target's padding).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,7 +10,6 @@
 #include "cuetrack/core/DepthMedian.hpp"
 #include "cuetrack/core/FastMotion.hpp"
 #include "cuetrack/core/LostSearch.hpp"
-#include "cuetrack/core/ModeGuard.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
 #include "cuetrack/core/WindowPadding.hpp"
 
@@ -39,75 +38,9 @@ TEST_CASE("DepthGuard: a jump off the confirmed depth either way is flagged",
   CHECK_FALSE(g.jumped(2600.f));
   CHECK(g.jumped(2700.f));  // 0.75 x 2700 > 2000: the background behind
   // Found again further back: the confirmed depth moves there.
-  g.update(2700.f, true, true, kFrameS);
+  g.confirm(2700.f);
   CHECK_FALSE(g.jumped(2700.f));
   CHECK(g.confirmedMm() == 2700.f);
-}
-
-TEST_CASE("DepthGuard: learning follows smooth motion in depth, not a slide",
-          "[core][depthguard]") {
-  DepthGuard g;
-  g.reset(2000.f);
-  CHECK(g.learnable(2200.f));  // within 12%
-  CHECK_FALSE(g.learnable(2300.f));
-  // Walking away by 2% a frame while nothing is learnt: the reference follows.
-  float z = 2000.f;
-  for (int i = 0; i < 10; ++i) {
-    z *= 1.02f;
-    g.update(z, false, true, kFrameS);
-  }
-  CHECK(g.learnReferenceMm() == z);
-  CHECK(g.learnable(z));
-  // A slide of 20% in one frame (onto the wall behind): the reference stays.
-  g.update(z * 1.2f, false, true, kFrameS);
-  CHECK(g.learnReferenceMm() == z);
-  CHECK_FALSE(g.learnable(z * 1.2f));
-  // While lost the reference does not follow.
-  DepthGuard lost;
-  lost.reset(2000.f);
-  lost.update(2010.f, false, false, kFrameS);
-  CHECK(lost.learnReferenceMm() == 2000.f);
-}
-
-TEST_CASE("DepthGuard: the follow allowance scales with the frame gap; off, all is learnable",
-          "[core][depthguard]") {
-  DepthGuard g;
-  g.reset(2000.f);
-  g.update(2150.f, false, true, 3.f * kFrameS);  // 7.5% over three frames: within 3 x 3%
-  CHECK(g.learnReferenceMm() == 2150.f);
-  DepthGuard h;
-  h.reset(2000.f);
-  h.update(2150.f, false, true, kFrameS);  // the same in one frame: no
-  CHECK(h.learnReferenceMm() == 2000.f);
-  DepthGuard off;
-  off.configure(false);
-  off.reset(2000.f);
-  CHECK(off.learnable(5000.f));
-}
-
-TEST_CASE("ModeGuard: a confident best far above the mean is a split cloud", "[core][modeguard]") {
-  CHECK(ModeGuard::split(0.2f, 0.6f));         // best 0.8 confident, mean 0.4 below
-  CHECK_FALSE(ModeGuard::split(0.45f, 0.6f));  // the mean close to the best
-  CHECK_FALSE(ModeGuard::split(-0.5f, 0.3f));  // best only 0.65 confident: maybe hidden
-}
-
-TEST_CASE("ModeGuard: the mode's mean ignores the other place", "[core][modeguard]") {
-  static ParticleFilter f;
-  static Box boxes[kMaxParticles];
-  const int n = 100;
-  f.setSize(n);
-  for (int i = 0; i < n; ++i) {
-    // 60 particles around u = 100 and 40 around u = 300, the best (heaviest) at 100.
-    const float u = i < 60 ? 100.f + static_cast<float>(i % 5) : 300.f + static_cast<float>(i % 5);
-    f[i] = at2d(u, 100.f, 40.f, 40.f);
-    f.weights()[i] = i == 0 ? 2.f : 1.f;
-    boxes[i] = particleWindow(f[i], false, CameraIntrinsics{});
-  }
-  const Particle all = f.weightedMean();
-  CHECK(all.p[0] > 150.f);  // the plain mean lies between the two
-  ModeGuard g;
-  const Particle mode = g.modeMean(f, boxes);
-  CHECK(mode.p[0] == Approx(102.f).margin(1.f));
 }
 
 TEST_CASE("FastMotion: in 2D every 10th particle jumps after a learnt frame only",
@@ -239,47 +172,6 @@ TEST_CASE("LostSearch: windows mostly outside the image are not scored", "[core]
   CHECK(LostSearch::insideEnough(Box{10.f, 10.f, 50.f, 50.f}, 640, 480));
   CHECK(LostSearch::insideEnough(Box{-5.f, 10.f, 50.f, 50.f}, 640, 480));         // 90% inside
   CHECK_FALSE(LostSearch::insideEnough(Box{-25.f, 10.f, 50.f, 50.f}, 640, 480));  // half
-}
-
-TEST_CASE("LostSearch: the best fresh windows climb to the score's peak", "[core][lostsearch]") {
-  static ParticleFilter f;
-  static Box boxes[kMaxParticles];
-  static float scores[kMaxParticles];
-  static uint8_t valid[kMaxParticles];
-  SearchView view;
-  view.imageW = 640;
-  view.imageH = 480;
-  const float peakX = 300.f, peakY = 200.f;  // top-left of the best window
-  auto score = [&](const Box& b) {
-    return 1.f - 0.01f * (std::fabs(b.x - peakX) + std::fabs(b.y - peakY));
-  };
-  const int n = 40;
-  f.setSize(n);
-  for (int i = 0; i < n; ++i) {
-    // Fresh windows (even i) 8-20 px off the peak; the rest far away.
-    const float off = i % 2 == 0 ? 8.f + static_cast<float>(i % 7) * 2.f : 200.f;
-    f[i] = at2d(peakX + off + 20.f, peakY - off + 20.f, 40.f, 40.f);
-    boxes[i] = view.window(f[i]);
-    scores[i] = score(boxes[i]);
-    valid[i] = 1;
-  }
-  const PixelRect roi{0, 0, 640, 480};
-  int scoredAfter = 0;
-  auto counting = [&](const Box& b) {
-    ++scoredAfter;
-    return score(b);
-  };
-  LostSearch::refine(n, roi, view, f, boxes, scores, valid, counting);
-  int climbed = 0;
-  for (int i = 0; i < n; i += 2) {
-    if (scores[i] > 0.95f) ++climbed;
-    // The particle moved with its window, and the score is the window's.
-    CHECK(boxes[i].x == Approx(f[i].p[0] - 20.f));
-    CHECK(scores[i] == Approx(score(boxes[i])));
-  }
-  CHECK(climbed >= tuning::search::kRefineWindows);  // the best 8 reach the peak's top
-  CHECK(scoredAfter <= tuning::search::kRefineWindows * tuning::search::kRefineSteps * 4);
-  for (int i = 1; i < n; i += 2) CHECK(scores[i] < 0.f);  // not fresh: untouched
 }
 
 TEST_CASE("DepthMedian: the median of the valid depth inside the box, to 10 mm",

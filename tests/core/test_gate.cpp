@@ -1,7 +1,6 @@
 // The update gate and the lost detector (Gate.hpp).
 #include <catch2/catch.hpp>
 
-#include "cuetrack/core/DepthGuard.hpp"
 #include "cuetrack/core/Gate.hpp"
 
 using namespace cuetrack;
@@ -73,13 +72,4 @@ TEST_CASE(
   TrackState s = TrackState::Tracking;
   for (int i = 0; i < 30; ++i) s = d.step(s, 0.6f);
   CHECK(d.foundThreshold() == Approx(d.foundAbove));
-}
-
-TEST_CASE("depthWithin: within a factor either way, and always without a reference", "[core]") {
-  CHECK(depthWithin(2000.f, 2000.f, 1.12f));
-  CHECK(depthWithin(2240.f, 2000.f, 1.12f));  // 12% behind: the limit
-  CHECK_FALSE(depthWithin(2250.f, 2000.f, 1.12f));
-  CHECK(depthWithin(1786.f, 2000.f, 1.12f));  // 2000 / 1.12 = 1785.7 in front
-  CHECK_FALSE(depthWithin(1780.f, 2000.f, 1.12f));
-  CHECK(depthWithin(5000.f, 0.f, 1.12f));  // no confirmed depth yet
 }

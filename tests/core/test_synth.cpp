@@ -84,19 +84,15 @@ Stats runScene(const char* scene, const TrackerConfig& config, uint64_t seed, in
   return s;
 }
 
-// The scene backwards from its last frame, scene seed 1 as in cuetrack-bench.
-Stats runSceneBackwards(const char* scene, const TrackerConfig& config, uint64_t seed, int frames) {
-  return runScene(scene, config, seed, frames, 1 << 30, 1, false, 1, true);
+// The moving scene with its seed fixed (1, as in cuetrack-bench), every stride-th frame.
+Stats runMoving(const TrackerConfig& config, uint64_t seed, int frames, int stride, bool rgbOnly) {
+  return runScene("moving", config, seed, frames, 1 << 30, stride, rgbOnly, 1);
 }
 
 Stats runScene(const char* scene, Preset preset, uint64_t seed, int frames) {
   return runScene(scene, presetConfig(preset), seed, frames);
 }
 
-// The moving scene with its seed fixed (1, as in cuetrack-bench), every stride-th frame.
-Stats runMoving(const TrackerConfig& config, uint64_t seed, int frames, int stride, bool rgbOnly) {
-  return runScene("moving", config, seed, frames, 1 << 30, stride, rgbOnly, 1);
-}
 }  // namespace
 
 bool emulated() {
@@ -186,7 +182,7 @@ TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2
   // Over scene and tracker seeds 1-10. The paper's 2.1 has no guard against a cloud split
   // between two places: in about one seed of twenty (seed 19 of 1-20 before the weak
   // classifiers' density floor, seed 5 after) the estimate falls between target and twin
-  // and drifts off; best (mode guard, lost detection) keeps every seed.
+  // and drifts off; best (lost detection) keeps every seed.
   const uint64_t seeds = sanitized() ? 2 : 10;
   for (Preset p : {Preset::Test2_1, Preset::Best}) {
     int kept = 0;
@@ -235,58 +231,6 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
   const float meanNoLost = sumNoLost / static_cast<float>(controlSeeds);
   INFO("without lost detection, mean hit rate after frame " << kAfter << ": " << meanNoLost);
   CHECK(meanNoLost <= 0.5f);
-}
-
-TEST_CASE("best does not learn the wall when its cloud slides off a low-contrast target",
-          "[core][e2e]") {
-  if (emulated() || sanitized()) {
-    WARN("backward untextured run skipped under emulation and the sanitizers (too slow)");
-    return;
-  }
-  // The grey cylinder on the grey wall, played backwards (cuetrack-bench --reverse
-  // synth:untextured, run 7): at a turn of its motion the cloud slid 23% back toward the
-  // wall while scoring 0.69; learnt there, the classifier took the wall for the target
-  // and the run was lost for good (24% hits). Measured 2026-11-23: 64% hits with the check.
-  TrackerConfig unchecked = presetConfig(Preset::Best);
-  unchecked.learnDepthCheck = false;
-  const Stats with = runSceneBackwards("untextured", presetConfig(Preset::Best), 7, 150);
-  const Stats without = runSceneBackwards("untextured", unchecked, 7, 150);
-  CHECK(with.hitRate() >= 0.5f);
-  CHECK(without.hitRate() < 0.35f);  // control: the failure is still there without the check
-  CHECK(with.allocations == 0);
-}
-
-TEST_CASE("climbing the best search windows finds the reappeared target sooner", "[core][e2e]") {
-  if (emulated() || sanitized()) {
-    // The climb itself runs in "best re-acquires the target ..." there too.
-    WARN("20-seed comparison skipped under emulation and the sanitizers (too slow)");
-    return;
-  }
-  // While lost, a fresh search window that lands 10-30% off the reappeared target scores
-  // below the background's best and is resampled away; climbed, it reaches the target.
-  // Measured (2026-11-22, scene and tracker seeds 1-20): with climbing every seed hits again
-  // 5-19 frames after the last hidden frame (186 in all); without, 6-40 and seed 14 never
-  // (320 in all).
-  TrackerConfig plain = presetConfig(Preset::Best);
-  plain.refineSearch = false;
-  int with = 0, without = 0;
-  for (uint64_t seed = 1; seed <= 20; ++seed) {
-    const Stats a = runScene("occlusion", presetConfig(Preset::Best), seed, 150);
-    const Stats b = runScene("occlusion", plain, seed, 150);
-    REQUIRE(a.lastHidden > 0);
-    // Never found again counts as found at the end.
-    const int fa = a.foundAgainAt >= 0 ? a.foundAgainAt : 150;
-    const int fb = b.foundAgainAt >= 0 ? b.foundAgainAt : 150;
-    INFO("seed " << seed << ": hidden until " << a.lastHidden << ", found again at " << fa
-                 << " (without climbing " << fb << ")");
-    CHECK(fa - a.lastHidden <= 20);
-    CHECK(a.allocations == 0);
-    with += fa - a.lastHidden;
-    without += fb - b.lastHidden;
-  }
-  INFO("frames to re-acquire over 20 seeds: " << with << " with climbing, " << without
-                                              << " without");
-  CHECK(with * 3 < without * 2);
 }
 
 TEST_CASE("best's cylinder follows a target whose width changes as it turns", "[core][e2e]") {

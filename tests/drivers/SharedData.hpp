@@ -1,5 +1,6 @@
 // Where the shared real data lives: $CUETRACK_SHARED_DIR, else the compile-time default.
-// Tests that need it WARN and return when it is absent.
+// Tests that need it call CUETRACK_SKIP (Skip.hpp) when it is absent: ctest reports them
+// as skipped. CUETRACK_SHARED_DIR=/nonexistent ctest hides the data.
 #pragma once
 
 #include <sys/stat.h>

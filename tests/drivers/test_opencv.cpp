@@ -19,6 +19,7 @@
 #include <string>
 
 #include "SharedData.hpp"
+#include "Skip.hpp"
 #include "TempDir.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
 #include "cuetrack/drivers/OpenCvSources.hpp"
@@ -117,7 +118,29 @@ TEST_CASE("RGB-D folder bad input", "[opencv][rgbd][bad]") {
     RgbdFolderReader reader;
     REQUIRE(reader.open(dir.c_str()));
     CHECK(reader.next(*f) == ReadStatus::Error);
-    CHECK(std::string(reader.error()).find("depth/000000.png: depth must be a 16-bit") !=
+    CHECK(std::string(reader.error())
+              .find("depth/000000.png: depth must be 16-bit single-channel, not 8-bit with 1") !=
+          std::string::npos);
+  }
+  SECTION("16-bit colour PNG as depth is refused, not read as grey") {
+    cv::imwrite(dir + "/depth/000001.png", cv::Mat(480, 640, CV_16UC3, cv::Scalar(900, 900, 900)));
+    RgbdFolderReader reader;
+    REQUIRE(reader.open(dir.c_str()));
+    REQUIRE(reader.next(*f) == ReadStatus::Ok);
+    CHECK(reader.next(*f) == ReadStatus::Error);
+    CHECK(std::string(reader.error())
+              .find("depth/000001.png: depth must be 16-bit single-channel, not 16-bit with 3 "
+                    "channels") != std::string::npos);
+  }
+  SECTION("16-bit colour PNG as colour is refused, not scaled to 8 bits") {
+    cv::imwrite(dir + "/rgb/000002.png", cv::Mat(480, 640, CV_16UC3, cv::Scalar(900, 900, 900)));
+    RgbdFolderReader reader;
+    REQUIRE(reader.open(dir.c_str()));
+    REQUIRE(reader.next(*f) == ReadStatus::Ok);
+    REQUIRE(reader.next(*f) == ReadStatus::Ok);
+    CHECK(reader.next(*f) == ReadStatus::Error);
+    CHECK(std::string(reader.error())
+              .find("rgb/000002.png: colour must be 8 bits per channel, not 16-bit") !=
           std::string::npos);
   }
   SECTION("missing depth file") {
@@ -200,14 +223,45 @@ TEST_CASE("OTB folder: JPEG frames and 1-based boxes", "[opencv][otb]") {
   checkBox(f->groundTruth, Box{0, 0, 10, 10}, 1e-4f);
 }
 
+TEST_CASE("OTB folder: a truncated JPEG is named, or skipped and counted", "[opencv][otb][bad]") {
+  TempDir tmp;
+  const std::string dir = tmp / "Otb";
+  {
+    auto src = synth("box", 3);
+    auto slot = std::make_unique<FrameSlot>();
+    OtbFolderWriter w;
+    if (!w.open(dir.c_str())) FAIL(w.error());
+    while (src->next(*slot) == ReadStatus::Ok)
+      if (!w.write(*slot)) FAIL(w.error());
+    if (!w.close()) FAIL(w.error());
+  }
+  // Cut frame 2 to two thirds: libjpeg would decode it with grey rows and a warning.
+  const std::string p = dir + "/img/0002.jpg";
+  const std::string bytes = test::readText(p);
+  test::writeText(p, bytes.substr(0, bytes.size() * 2 / 3));
+  REQUIRE_FALSE(cv::imread(p).empty());  // what OpenCV alone would accept
+  auto f = std::make_unique<FrameSlot>();
+  OtbFolderReader r;
+  REQUIRE(r.open(dir.c_str()));
+  REQUIRE(r.next(*f) == ReadStatus::Ok);
+  CHECK(r.next(*f) == ReadStatus::Error);
+  CHECK(std::string(r.error()) == p + ": truncated JPEG (no end-of-image marker)");
+  SourceOptions skip;
+  skip.skipBadFrames = true;
+  OtbFolderReader s;
+  REQUIRE(s.open(dir.c_str(), skip));
+  int n = 0;
+  while (s.next(*f) == ReadStatus::Ok) ++n;
+  CHECK(n == 2);
+  CHECK(s.skippedFrames() == 1);
+}
 TEST_CASE("BoBoT video reader: own video, unreadable video", "[opencv][bobot]") {
   TempDir tmp;
   const std::string avi = tmp / "Vid_T_test.avi";
   {
     cv::VideoWriter vw(avi, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0, cv::Size(320, 240));
     if (!vw.isOpened()) {
-      WARN("this OpenCV cannot write MJPG AVI: skipped");
-      return;
+      CUETRACK_SKIP("this OpenCV cannot write MJPG AVI");
     }
     for (int i = 0; i < 6; ++i) vw.write(cv::Mat(240, 320, CV_8UC3, cv::Scalar(i * 40, 0, 0)));
   }
@@ -251,11 +305,73 @@ TEST_CASE("BoBoT video reader: own video, unreadable video", "[opencv][bobot]") 
   }
 }
 
+namespace {
+// Flips bits in the middle of the JPEG data of video frame `frame` (the frame-th "00dc"
+// chunk of the AVI's movi list): the container stays whole, the picture is damaged.
+void damageAviFrame(const std::string& avi, int frame) {
+  std::string data = test::readText(avi);
+  size_t at = data.find("movi");
+  REQUIRE(at != std::string::npos);
+  for (int k = 0; k <= frame; ++k) {
+    at = data.find("00dc", at + 4);
+    REQUIRE(at != std::string::npos);
+  }
+  uint32_t size = 0;
+  std::memcpy(&size, data.data() + at + 4, 4);
+  REQUIRE(size > 2000);
+  for (uint32_t i = size / 2; i < size / 2 + 600; i += 7) data[at + 8 + i] ^= 0x5a;
+  test::writeText(avi, data);
+}
+}  // namespace
+
+TEST_CASE("BoBoT video: a damaged frame is an error naming it, or skipped and counted",
+          "[opencv][bobot][bad]") {
+  TempDir tmp;
+  const std::string avi = tmp / "Vid_D_damaged.avi";
+  {
+    auto src = synth("moving", 8);
+    auto slot = std::make_unique<FrameSlot>();
+    BobotVideoWriter w;
+    if (!w.open(avi.c_str(), 30.0)) FAIL(w.error());
+    while (src->next(*slot) == ReadStatus::Ok)
+      if (!w.write(*slot)) FAIL(w.error());
+    if (!w.close()) FAIL(w.error());
+  }
+  auto f = std::make_unique<FrameSlot>();
+  {  // intact: every frame reads, none counted as damaged
+    BobotVideoReader r;
+    REQUIRE(r.open(avi.c_str()));
+    int n = 0;
+    while (r.next(*f) == ReadStatus::Ok) ++n;
+    CHECK(n == 8);
+    CHECK(r.skippedFrames() == 0);
+  }
+  damageAviFrame(avi, 5);
+  BobotVideoReader r;
+  REQUIRE(r.open(avi.c_str()));
+  int n = 0;
+  ReadStatus st;
+  while ((st = r.next(*f)) == ReadStatus::Ok) ++n;
+  CHECK(st == ReadStatus::Error);
+  CHECK(n == 5);
+  const std::string e = r.error();
+  CHECK(e.find("Vid_D_damaged.avi: frame 5 is damaged") != std::string::npos);
+  CHECK(e.find('\n') == std::string::npos);
+
+  SourceOptions skip;
+  skip.skipBadFrames = true;
+  BobotVideoReader s;
+  REQUIRE(s.open(avi.c_str(), skip));
+  std::vector<int> indices;
+  while (s.next(*f) == ReadStatus::Ok) indices.push_back(f->index);
+  CHECK(indices == std::vector<int>{0, 1, 2, 3, 4, 6, 7});
+  CHECK(s.skippedFrames() == 1);
+}
+
 TEST_CASE("real BoBoT sequences: frame counts and ground-truth alignment", "[opencv][shared]") {
   const std::string dir = test::sharedDataDir() + "/bobot";
   if (!test::pathExists(dir)) {
-    WARN("shared data absent (" << dir << "): skipped");
-    return;
+    CUETRACK_SKIP("shared data absent (" << dir << ")");
   }
   struct Seq {
     const char* name;
@@ -302,8 +418,7 @@ TEST_CASE("real BoBoT sequences: frame counts and ground-truth alignment", "[ope
 TEST_CASE("real TUM stills: 16-bit PNG depth (value / 5 = mm)", "[opencv][shared][stills]") {
   const std::string dir = test::sharedDataDir() + "/kinect-stills/tum-fr1";
   if (!test::pathExists(dir)) {
-    WARN("shared data absent (" << dir << "): skipped");
-    return;
+    CUETRACK_SKIP("shared data absent (" << dir << ")");
   }
   auto depth = std::make_unique<FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight>>();
   auto colour = std::make_unique<FixedImage<Rgb8, kMaxImageWidth, kMaxImageHeight>>();
@@ -328,7 +443,8 @@ TEST_CASE("real TUM stills: 16-bit PNG depth (value / 5 = mm)", "[opencv][shared
     CHECK(mm[mm.size() / 2] < 6000);
   }
   CHECK_FALSE(loadDepthPng16((dir + "/1.png").c_str(), *depth, err, sizeof err));  // 8-bit colour
-  CHECK(std::string(err).find("1.png: not a 16-bit") != std::string::npos);
+  CHECK(std::string(err).find("1.png: depth must be 16-bit single-channel, not 8-bit with 3") !=
+        std::string::npos);
 }
 
 TEST_CASE("OTB and BoBoT-video writers round-trip the ground truth", "[opencv][otb][bobot]") {
@@ -464,7 +580,8 @@ TEST_CASE("panned still: bad specs give one line naming the fault", "[opencv][pa
   fails("pan:" + c + "," + d + ",40,30,30,20,100,101,64,48:0", "frame count '0'");
   fails("pan:" + tmp / "nope.png" + "," + d + ",40,30,30,20,100,101,64,48",
         "nope.png: cannot decode image");
-  fails("pan:" + c + "," + c + ",40,30,30,20,100,101,64,48", "c.png: depth must be a 16-bit");
+  fails("pan:" + c + "," + c + ",40,30,30,20,100,101,64,48",
+        "c.png: depth must be 16-bit single-channel");
 }
 
 namespace {
@@ -653,7 +770,10 @@ TEST_CASE("BoBoT video reader: a video shorter than its ground truth is an error
   while ((st = r.next(*slot)) == ReadStatus::Ok) ++n;
   CHECK(st == ReadStatus::Error);
   CHECK(n < 20);
-  CHECK(std::string(r.error()) == avi + ": video ends at frame " + std::to_string(n) + " of 20");
+  // A cut through a frame leaves that frame damaged; a cut between frames ends the video.
+  const std::string e = r.error();
+  CHECK((e == avi + ": video ends at frame " + std::to_string(n) + " of 20" ||
+         e.rfind(avi + ": frame " + std::to_string(n) + " is damaged (", 0) == 0));
   SourceOptions skip;  // skipping counts the missing frames instead
   skip.skipBadFrames = true;
   BobotVideoReader s;

@@ -1,5 +1,5 @@
 // Real Kinect v1 stills through our own PGM loader (no OpenCV): the NYU depth maps are
-// 16-bit big-endian PGM in mm. Skips with a WARN when the shared data is absent.
+// 16-bit big-endian PGM in mm. Skipped (reported as such) when the shared data is absent.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "SharedData.hpp"
+#include "Skip.hpp"
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
 #include "cuetrack/drivers/RecordedParsers.hpp"
@@ -16,8 +17,7 @@ using namespace cuetrack;
 TEST_CASE("NYU Kinect stills: depth PGM loads with Kinect v1 ranges", "[stills][shared]") {
   const std::string dir = test::sharedDataDir() + "/kinect-stills/nyu-joinmap";
   if (!test::pathExists(dir)) {
-    WARN("shared data absent (" << dir << "): skipped");
-    return;
+    CUETRACK_SKIP("shared data absent (" << dir << ")");
   }
   // The documented calibration of these stills is the project's Kinect default.
   CHECK(kKinectV1Intrinsics.fx == 518.0f);

@@ -11,4 +11,5 @@ cuetrack_add_fuzzer(mavlink_parser SOURCES ${CMAKE_CURRENT_LIST_DIR}/mavlink/fuz
   ${CMAKE_SOURCE_DIR}/platform/fake/src/FakeSerial.cpp)
 target_include_directories(fuzz_mavlink_parser PRIVATE ${CMAKE_SOURCE_DIR}/platform/mavlink/include
   ${CMAKE_SOURCE_DIR}/platform/common/include ${CMAKE_SOURCE_DIR}/platform/fake/include
-  ${CMAKE_SOURCE_DIR}/platform/protocol ${CMAKE_SOURCE_DIR}/core/include)
+  ${CMAKE_SOURCE_DIR}/platform/protocol)
+target_link_libraries(fuzz_mavlink_parser PRIVATE cuetrack::core_headers)

@@ -13,6 +13,6 @@ cuetrack_add_fuzzer(proto_command SOURCES ${CMAKE_CURRENT_LIST_DIR}/protocol/fuz
   ${CMAKE_SOURCE_DIR}/platform/common/src/CommandText.cpp)
 foreach(t fuzz_proto_decoder fuzz_proto_command)
   target_include_directories(${t} PRIVATE ${CMAKE_SOURCE_DIR}/platform/protocol
-    ${CMAKE_SOURCE_DIR}/apps/cuetrack/src ${CMAKE_SOURCE_DIR}/platform/common/include
-    ${CMAKE_SOURCE_DIR}/core/include)
+    ${CMAKE_SOURCE_DIR}/apps/cuetrack/src ${CMAKE_SOURCE_DIR}/platform/common/include)
+  target_link_libraries(${t} PRIVATE cuetrack::core_headers)
 endforeach()

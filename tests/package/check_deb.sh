@@ -46,7 +46,8 @@ want_files=(usr/bin/cuetrack usr/bin/cuetrack-listen usr/lib/systemd/system/cuet
             usr/share/cuetrack/protocol/cuetrack_proto.c
             usr/share/cuetrack/protocol/example/fc_link.h
             usr/share/cuetrack/protocol/example/fc_link.c usr/share/doc/cuetrack/copyright
-            usr/share/doc/cuetrack/serial-protocol.md usr/share/doc/cuetrack/mavlink.md)
+            usr/share/doc/cuetrack/serial-protocol.md usr/share/doc/cuetrack/mavlink.md
+            usr/lib/udev/rules.d/52-cuetrack-serial.rules)
 [ "$freenect" = ON ] && want_files+=(usr/bin/cuetrack-record usr/lib/udev/rules.d/51-cuetrack-kinect.rules)
 for f in "${want_files[@]}"; do
   [ -e "$r/$f" ] || fail "package lacks /$f"
@@ -82,7 +83,10 @@ for k in "${!setting[@]}"; do
   [ "$k" = CUETRACK_EXTRA_ARGS ] || [ -n "${setting[$k]}" ] || fail "setting $k is empty"
 done
 # Run it the way a board would, but on a pseudo-terminal pair in place of the UART.
-command -v socat >/dev/null || fail "socat not found (scripts/setup.sh installs it)"
+# Without socat (scripts/setup.sh installs it) this part cannot run: exit 77, which ctest
+# reports as skipped (SKIP_RETURN_CODE), not as a pass.
+command -v socat >/dev/null ||
+  { echo "SKIPPED: socat not found: the service's command line is not run" >&2; exit 77; }
 setting[CUETRACK_SERIAL]=$work/ttyA
 read -ra words <<<"$(sed -n 's/^ExecStart=//p' "$r/usr/lib/systemd/system/cuetrack.service")"
 args=()

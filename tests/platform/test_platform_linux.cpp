@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <netinet/in.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -12,6 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -90,6 +92,77 @@ TEST_CASE("SIGTERM and SIGINT only set the stop flag") {
   CHECK(stopRequested());
   CHECK(stopSignal() == SIGTERM);
   REQUIRE(raise(SIGPIPE) == 0);  // ignored: a closed pipe becomes a write error instead
+}
+
+TEST_CASE("a disk that fills mid-row leaves whole rows only, and says so") {
+  // The file-size limit stands in for a full disk: write() takes what fits, then fails.
+  const char* path = "platform_rows.csv";
+  const pid_t pid = fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    ignoreWriteSignals();
+    rlimit lim{};
+    lim.rlim_cur = lim.rlim_max = 700;  // bytes: the header and a few rows, then mid-row
+    setrlimit(RLIMIT_FSIZE, &lim);
+    FdTrackSink csv;
+    if (!csv.openFile(path, TextFormat::Csv)) _exit(2);
+    ctp_track_t t{};
+    for (uint32_t i = 0; i < 100; ++i) {
+      t.seq = i;
+      if (!csv.write(t))
+        _exit(std::string(csv.error()).find("(the partial row was removed)") != std::string::npos
+                  ? 0
+                  : 3);
+    }
+    _exit(4);
+  }
+  int status = 0;
+  REQUIRE(waitpid(pid, &status, 0) == pid);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  FILE* f = std::fopen(path, "rb");
+  REQUIRE(f != nullptr);
+  std::string text;
+  char buf[1024];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+  std::fclose(f);
+  std::remove(path);
+  REQUIRE_FALSE(text.empty());
+  CHECK(text.size() < 700);
+  CHECK(text.back() == '\n');  // ends on a whole row
+  // Every row has as many fields as the header.
+  const auto fields = [](const std::string& line) {
+    return std::count(line.begin(), line.end(), ',');
+  };
+  size_t start = 0, rows = 0;
+  const long want = fields(text.substr(0, text.find('\n')));
+  while (start < text.size()) {
+    const size_t end = text.find('\n', start);
+    CHECK(fields(text.substr(start, end - start)) == want);
+    start = end + 1;
+    ++rows;
+  }
+  CHECK(rows >= 2);  // the header and at least one row made it
+}
+
+TEST_CASE("close() syncs and closes a file, stdout stays open") {
+  char path[] = "/tmp/cuetrack-close-XXXXXX";
+  const int fd = mkstemp(path);
+  REQUIRE(fd >= 0);
+  ::close(fd);
+  FdTrackSink csv;
+  REQUIRE(csv.openFile(path, TextFormat::Csv));
+  ctp_track_t t{};
+  REQUIRE(csv.write(t));
+  CHECK(csv.close());
+  CHECK_FALSE(csv.write(t));  // closed: nothing more goes to the file
+  CHECK(std::string(csv.error()) == std::string(path) + ": not open");
+  std::remove(path);
+  FdTrackSink out;
+  out.attachStdout(TextFormat::Line);
+  CHECK(out.close());  // not ours to close
+  CHECK(::fcntl(1, F_GETFD) != -1);
 }
 
 TEST_CASE("a file-size limit (ulimit -f) is a write error, not a silent death") {

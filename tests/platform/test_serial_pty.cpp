@@ -2,10 +2,16 @@
 // ways, raw 8-bit bytes untouched, clear errors, peer loss and reopen.
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
 #include "Process.hpp"
+#include "Skip.hpp"
+#include "cuetrack/platform/linux/PortLock.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
 
 using namespace cuetrack::platform;
@@ -48,8 +54,7 @@ TEST_CASE("bad serial arguments give one line naming the device") {
 
 TEST_CASE("bytes cross a pty pair both ways, all 256 values intact") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   PtyPair pty;
   REQUIRE(pty.start());
@@ -73,8 +78,7 @@ TEST_CASE("bytes cross a pty pair both ways, all 256 values intact") {
 
 TEST_CASE("when the peer goes away the port reports Closed, then reopens when it returns") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   PtyPair pty;
   REQUIRE(pty.start());
@@ -100,4 +104,94 @@ TEST_CASE("when the peer goes away the port reports Closed, then reopens when it
   REQUIRE(a.write(buf, 3).bytes == 3);
   uint8_t got[3];
   REQUIRE(readAll(b, got, 3) == 3);
+}
+
+namespace {
+// A private lock folder per test: the tests do not touch /run/lock.
+struct LockDir {
+  char path[64];
+  LockDir() {
+    std::snprintf(path, sizeof path, "/tmp/cuetrack-lock-XXXXXX");
+    REQUIRE(mkdtemp(path) != nullptr);
+  }
+  ~LockDir() {
+    const std::string cmd = std::string("rm -rf ") + path;
+    if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "could not remove %s\n", path);
+  }
+};
+
+void writeLockFile(const std::string& path, long pid) {
+  FILE* f = std::fopen(path.c_str(), "w");
+  REQUIRE(f != nullptr);
+  std::fprintf(f, "%10ld\n", pid);
+  std::fclose(f);
+}
+}  // namespace
+
+TEST_CASE("lock file names: below /dev, slashes as underscores") {
+  char out[128];
+  REQUIRE(PortLock::lockPathFor("/run/lock", "/dev/ttyUSB0", out, sizeof out));
+  CHECK(std::string(out) == "/run/lock/LCK..ttyUSB0");
+  REQUIRE(PortLock::lockPathFor("/run/lock", "/dev/pts/7", out, sizeof out));
+  CHECK(std::string(out) == "/run/lock/LCK..pts_7");
+  CHECK_FALSE(PortLock::lockPathFor("/run/lock", "/dev/ttyUSB0", out, 12));
+}
+
+TEST_CASE("a second opener of one port is refused, naming the holder; stale locks are replaced") {
+  if (!haveSocat()) CUETRACK_SKIP("socat not installed");
+  PtyPair pty;
+  REQUIRE(pty.start());
+  LockDir dir;
+  char lockPath[256];
+  REQUIRE(PortLock::lockPathFor(dir.path, pty.a(), lockPath, sizeof lockPath));
+  const std::string lock = lockPath;
+
+  SerialPort first(dir.path);
+  REQUIRE(first.open(pty.a(), 115200));
+  CHECK(cuetrack::test::fileExists(lock.c_str()));
+  char text[64] = "";
+  REQUIRE(cuetrack::test::readFile(lock.c_str(), text, sizeof text));
+  CHECK(std::strtol(text, nullptr, 10) == static_cast<long>(getpid()));
+
+  // The same process again: the lock file is ours, the device's flock refuses.
+  SerialPort second(dir.path);
+  CHECK_FALSE(second.open(pty.a(), 115200));
+  CHECK(std::string(second.error()).find(std::string(pty.a()) + ": in use by") == 0);
+  first.close();
+  CHECK_FALSE(cuetrack::test::fileExists(lock.c_str()));  // released with the port
+  REQUIRE(second.open(pty.a(), 115200));
+  second.close();
+  // reopen() (the link's retry after a vanished device) takes the lock file again.
+  REQUIRE(second.reopen());
+  CHECK(cuetrack::test::fileExists(lock.c_str()));
+  second.close();
+
+  SECTION("a lock file held by another live process names its PID") {
+    const long other = static_cast<long>(getppid());  // alive while we run
+    writeLockFile(lock, other);
+    SerialPort p(dir.path);
+    CHECK_FALSE(p.open(pty.a(), 115200));
+    CHECK(std::string(p.error()) == std::string(pty.a()) + ": in use by process " +
+                                        std::to_string(other) + " (lock file " + lock + ")");
+    CHECK(cuetrack::test::fileExists(lock.c_str()));  // not ours to remove
+  }
+  SECTION("a lock file whose process is gone is stale and replaced") {
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) _exit(0);
+    int status = 0;
+    REQUIRE(waitpid(child, &status, 0) == child);  // reaped: that PID is dead
+    writeLockFile(lock, static_cast<long>(child));
+    SerialPort p(dir.path);
+    REQUIRE(p.open(pty.a(), 115200));
+    REQUIRE(cuetrack::test::readFile(lock.c_str(), text, sizeof text));
+    CHECK(std::strtol(text, nullptr, 10) == static_cast<long>(getpid()));
+  }
+  SECTION("a lock folder we cannot use is no error; flock still keeps the port ours") {
+    SerialPort p("/nonexistent/lockdir"), q("/nonexistent/lockdir");
+    REQUIRE(p.open(pty.a(), 115200));
+    CHECK_FALSE(q.open(pty.a(), 115200));
+    CHECK(std::string(q.error()).find("in use by another program (locked; holder unknown)") !=
+          std::string::npos);
+  }
 }

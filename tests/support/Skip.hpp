@@ -1,8 +1,9 @@
 // Honest skips for Catch2 2.13 (which has no SKIP of its own): CUETRACK_SKIP(reason)
 // prints the reason, marks the run as skipped and leaves the test case. Our main
 // (catch_main.cpp) then exits with kSkipReturnCode when nothing failed, and ctest,
-// told that code by cuetrack_add_test(... SKIPPABLE), reports the test as skipped,
-// never as passed.
+// told that code by cuetrack_add_test (SKIP_RETURN_CODE), reports the test as skipped,
+// never as passed. One ctest test is one executable: a skipped case marks the whole
+// executable skipped (its other cases still ran, and any failure still fails it).
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -24,4 +25,13 @@ int& skipCount();
     ++::cuetrack::test::skipCount(); \
     WARN("SKIPPED: " << reason);     \
     return;                          \
+  } while (false)
+
+// A statement: a part of the test case cannot run here (e.g. kernels for an instruction
+// set this CPU lacks). Prints the reason and marks the run as skipped, but does not
+// return: the rest still runs, and a failed check still fails the test.
+#define CUETRACK_SKIP_PART(reason)   \
+  do {                               \
+    ++::cuetrack::test::skipCount(); \
+    WARN("SKIPPED: " << reason);     \
   } while (false)

@@ -14,6 +14,7 @@
 #include "Sources.hpp"
 #include "View.hpp"
 #include "WaitingSource.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
@@ -52,7 +53,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   switch (parseOptions(argc, argv, &opt, err, sizeof err)) {
     case ParseResult::Help:
       std::fputs(usageText(), stdout);
-      return kExitOk;
+      return platform::stdoutWritten("cuetrack") ? kExitOk : kExitOutput;
     case ParseResult::Error:
       reporter.report(err);
       return kExitUsage;
@@ -96,13 +97,13 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     static WaitingSource waiting(
         [](void* ctx, char* e, size_t n) {
           const AppOptions& o = *static_cast<const AppOptions*>(ctx);
-          return openSource(o.source, o.seed, o.frames, e, n);
+          return openSource(o.source, o.seed, o.frames, e, n, o.skipBadFrames);
         },
         &opt, clock, sleeper, reporter, &platform::stopRequested);
     waiting.tryOpen();
     source = &waiting;
   } else {
-    source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err);
+    source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err, opt.skipBadFrames);
     if (!source) {
       reporter.report(err);
       return kExitSource;
@@ -287,6 +288,11 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     }
     reporter.report(err);
   }
+  bool closeFailed = false;
+  if (opt.outPath && !fileSink.close()) {  // the rows may sit in the page cache until here
+    reporter.report(fileSink.error());
+    closeFailed = true;
+  }
 
   if (link && !link->drain(1000))
     reporter.report("serial: could not send the last messages within 1 s");
@@ -299,6 +305,10 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
                           : r == StepResult::Done        ? "end of source or --frames"
                           : r == StepResult::OutputsGone ? "every output failed"
                                                          : "error");
+    // Damaged frames skipped (--skip-bad-frames) never reached the tracker: say how many.
+    if (source->skippedFrames() > 0 && n > 0 && static_cast<size_t>(n) < sizeof err)
+      n += std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
+                         "; %d damaged frames skipped", source->skippedFrames());
     // What the link managed: a peer that stopped reading shows as tx-dropped.
     if (link && n > 0 && static_cast<size_t>(n) < sizeof err) {
       const platform::LinkStats& s = link->stats();
@@ -319,6 +329,19 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
                   "docs/first-hour.md",
                   argv[0], argv[0]);
     reporter.report(err);
+  } else {
+    // Even --quiet: frames and messages are not lost without a word.
+    if (source->skippedFrames() > 0) {
+      std::snprintf(err, sizeof err, "%d damaged frames skipped", source->skippedFrames());
+      reporter.report(err);
+    }
+    if (link && link->stats().txDropped > 0) {
+      const platform::LinkStats& s = link->stats();
+      std::snprintf(err, sizeof err, "serial sent %u tx-dropped %u rx-errors %u",
+                    static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
+                    static_cast<unsigned>(s.rxErrors));
+      reporter.report(err);
+    }
   }
   switch (r) {
     case StepResult::SourceError:
@@ -326,7 +349,8 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     case StepResult::BoxRejected:
       return kExitBoxRejected;
     default:
-      return pipeline.outputFailed() || (opt.videoPath && !videoOk) ? kExitOutput : kExitOk;
+      return pipeline.outputFailed() || closeFailed || (opt.videoPath && !videoOk) ? kExitOutput
+                                                                                   : kExitOk;
   }
 }
 

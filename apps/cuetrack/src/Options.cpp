@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "cuetrack/platform/HostPort.hpp"
+#include "cuetrack/platform/OptionOnce.hpp"
 
 namespace cuetrack::app {
 namespace {
@@ -105,21 +106,29 @@ const char* usageText() {
          "  --wait-camera      with --source kinect: no Kinect plugged in yet is not an error;\n"
          "                     look for one every second until it comes (with --serial,\n"
          "                     HEARTBEATs flagged no-camera go out and commands are answered)\n"
+         "  --skip-bad-frames  skip a recording's damaged or unreadable frames (counted in the\n"
+         "                     final line) instead of stopping on the first\n"
          "  --config NAME      tracker preset: best (default), 1.1-1.4, 2.1-2.5\n"
          "  --seed N           random seed (default 1)\n"
-         "  --quiet            no status line (fps, dropped frames, state) on stderr\n"
+         "  --quiet            no status line (fps, dropped frames, state) on stderr; at the\n"
+         "                     end only losses are reported (damaged frames skipped,\n"
+         "                     serial messages dropped)\n"
          "  --help\n"
-         "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM, STOP command),\n"
-         "  1 bad command line, 2 source failed (cannot open, a read failed, or a frame's size\n"
-         "  differs from the frame the track began on), 3 output failed (cannot open, or a\n"
-         "  write to --out/stdout failed; tracking went on), 4 the --box, or the source's\n"
-         "  ground-truth box, refused by the tracker\n";
+         "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM/SIGHUP, STOP command),\n"
+         "  1 source failed (cannot open, a read failed, a damaged frame, or a frame's size\n"
+         "  differs from the frame the track began on), 2 bad command line (an option given\n"
+         "  twice too; --show or --select without a display, a --select cancelled), 3 output\n"
+         "  failed (cannot open, or a write to --out/stdout/--video/--snapshot failed;\n"
+         "  tracking went on), 4 the --box, or the source's ground-truth box, refused by the\n"
+         "  tracker\n";
 }
 
 ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size_t errLen) {
   *out = AppOptions{};
+  platform::OptionOnce once;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
+    if (a[0] == '-' && !once.first(a, err, errLen)) return ParseResult::Error;
     auto value = [&](const char** v) {
       if (i + 1 >= argc) {
         std::snprintf(err, errLen, "%s needs a value (see --help)", a);
@@ -151,6 +160,8 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
     } else if (std::strcmp(a, "--snapshot") == 0) {
       if (!value(&v)) return ParseResult::Error;
       out->snapshotPath = v;
+    } else if (std::strcmp(a, "--skip-bad-frames") == 0) {
+      out->skipBadFrames = true;
     } else if (std::strcmp(a, "--source") == 0) {
       if (!value(&v)) return ParseResult::Error;
       // kinect:MODE: the tracker needs colour, so both streams or colour alone.
@@ -242,8 +253,8 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       out->outPath = v;
     } else if (std::strcmp(a, "--frames") == 0) {
       if (!value(&v)) return ParseResult::Error;
-      if (!parseLong(v, 0, 2000000000L, &n)) {
-        std::snprintf(err, errLen, "--frames %s: expected a count >= 0", v);
+      if (!parseLong(v, 1, 2000000000L, &n)) {  // 0 would run nothing and say "done"
+        std::snprintf(err, errLen, "--frames %s: expected a count >= 1", v);
         return ParseResult::Error;
       }
       out->frames = static_cast<int>(n);

@@ -10,9 +10,9 @@ namespace cuetrack::app {
 
 // Exit codes, also listed by --help.
 enum ExitCode : int {
-  kExitOk = 0,           // source ended, --frames reached, SIGINT/SIGTERM, or STOP command
-  kExitUsage = 1,        // bad command line
-  kExitSource = 2,       // source could not be opened, failed while reading, or changed size
+  kExitOk = 0,           // source ended, --frames reached, SIGINT/SIGTERM/SIGHUP, or STOP
+  kExitSource = 1,       // source could not be opened, failed while reading, or changed size
+  kExitUsage = 2,        // bad command line (the convention of every tool, README)
   kExitOutput = 3,       // --serial/--out could not be opened, or a file/stdout write failed
   kExitBoxRejected = 4,  // --box or ground-truth box refused by the tracker (outside...)
 };
@@ -32,8 +32,9 @@ struct AppOptions {
   const char* preset = "best";
   uint64_t seed = 1;
   bool quiet = false;
-  bool realtime = false;    // play recordings and scenes at their own frame rate
-  bool waitCamera = false;  // --source kinect: wait for one to be plugged in (WaitingSource)
+  bool realtime = false;       // play recordings and scenes at their own frame rate
+  bool waitCamera = false;     // --source kinect: wait for one to be plugged in (WaitingSource)
+  bool skipBadFrames = false;  // a recording's damaged frames are skipped (counted), not fatal
   Protocol protocol = Protocol::Cuetrack;   // on --serial
   int mavSysId = 1;                         // MAVLink system id (the vehicle's)
   int mavCompId = 100;                      // MAVLink component id (MAV_COMP_ID_CAMERA)

@@ -127,11 +127,18 @@ bool SerialLink::sendTrack(ctp_track_t track) {
   return true;
 }
 
+// Due after a second without anything on the line, and at most once a second by the
+// clock: the time of the last write moves only when one succeeds, so on a congested line
+// that alone would try (and drop, and count) a heartbeat on every frame.
 bool SerialLink::heartbeatDue() const {
-  return _port.connected() && _clock.nowUs() - _port.lastTxUs() >= kHeartbeatPeriodUs;
+  const uint64_t now = _clock.nowUs();
+  return _port.connected() && now - _port.lastTxUs() >= kHeartbeatPeriodUs &&
+         (!_heartbeatTried || now - _lastHeartbeatTryUs >= kHeartbeatPeriodUs);
 }
 
 void SerialLink::sendHeartbeat(uint8_t state, uint32_t frames, uint8_t flags) {
+  _heartbeatTried = true;
+  _lastHeartbeatTryUs = _clock.nowUs();
   ctp_heartbeat_t h{};
   h.seq = nextSeq();
   h.time_us = _clock.nowUs();

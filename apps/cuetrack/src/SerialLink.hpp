@@ -71,6 +71,8 @@ class SerialLink final : public platform::TrackLink {
   uint16_t _rateHz{0};
   bool _haveSentTrack{false};
   uint64_t _lastTrackTimeUs{0};
+  bool _heartbeatTried{false};
+  uint64_t _lastHeartbeatTryUs{0};  // sent or not: a congested line gets one try a second
 };
 
 }  // namespace cuetrack::app

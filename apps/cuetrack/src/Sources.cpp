@@ -56,7 +56,8 @@ FrameSource* openKinect(KinectStreams streams, char* err, size_t errLen) {
 
 }  // namespace
 
-FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen) {
+FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen,
+                        bool skipBadFrames) {
   if (spec == nullptr) {
 #if defined(CUETRACK_HAVE_KINECT)
     char why[160] = "";
@@ -97,6 +98,7 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   // fakenect recordings only (and says so for other formats). One allocation, at start.
   SourceOptions options;
   options.seed = seed;
+  options.skipBadFrames = skipBadFrames;
   static std::unique_ptr<FrameSource> recorded;
   recorded = openFrameSource(spec, options, err, errLen);
   return recorded.get();

@@ -11,9 +11,11 @@ namespace cuetrack::app {
 
 // spec: nullptr (Kinect when present, else synth:<default scene>), "kinect",
 // "synth" / "synth:SCENE", or a recording path. A synthetic scene runs for `frames`
-// frames when that is > 0 (the scene's own length otherwise). nullptr + one line in
-// err on failure.
-FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen);
+// frames when that is > 0 (the scene's own length otherwise). skipBadFrames: a recording
+// skips damaged frames (counted, skippedFrames()) instead of failing. nullptr + one line
+// in err on failure.
+FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen,
+                        bool skipBadFrames = false);
 
 // After openSource(nullptr, ...): which source the default chose and why, one phrase, e.g.
 // "synth:moving, a generated scene (no Kinect found; --source to choose)". Else spec.

@@ -70,12 +70,17 @@ bool Listener::handle(const ctp_frame_t& frame) {
                        : m.type == CTP_MSG_HEARTBEAT ? m.u.heartbeat.seq
                        : m.type == CTP_MSG_ACK       ? m.u.ack.seq
                                                      : m.u.error.seq;
-  if (_haveSeq && seq != _lastSeq + 1) {
-    // Seq restarting at 0 means the device restarted: not a gap.
-    if (seq > _lastSeq) _stats.seqGaps += seq - _lastSeq - 1;
+  const bool hadLast = _seq.hasLast();
+  const uint32_t before = _seq.last(), restarts = _seq.restarts();
+  const uint32_t missing = _seq.see(seq);
+  _stats.seqGaps = static_cast<uint32_t>(_seq.lost());
+  if (_reportNextGap && hadLast) {
+    // Across a restart of ours or a reconnect: said at once, not only in the totals.
+    std::snprintf(line, sizeof line, "seq %u after %u: %u messages lost%s", seq, before, missing,
+                  _seq.restarts() != restarts ? " (the device restarted)" : "");
+    _problems.report(line);
   }
-  _haveSeq = true;
-  _lastSeq = seq;
+  _reportNextGap = false;
   switch (m.type) {
     case CTP_MSG_TRACK:
       ++_stats.tracks;

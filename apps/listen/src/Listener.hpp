@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "SeqCounter.hpp"
 #include "cuetrack/platform/ByteStream.hpp"
 #include "cuetrack/platform/Reporter.hpp"
 #include "cuetrack/platform/TrackSink.hpp"
@@ -17,7 +18,7 @@ struct ListenStats {
   uint32_t acks = 0;
   uint32_t errors = 0;    // ERROR replies from the device
   uint32_t rejected = 0;  // frames we refused: framing, CRC, version, malformed
-  uint32_t seqGaps = 0;   // messages missing according to seq
+  uint32_t seqGaps = 0;   // messages missing according to seq (SeqCounter::lost)
 };
 
 enum class PollResult : uint8_t { Ok, Closed, OutputFailed };
@@ -32,7 +33,17 @@ class Listener {
   PollResult poll(int timeoutMs, bool* received);
   bool send(const ctp_command_t& command);
 
+  // The messages before this run (a state file) or before a reconnect ended at seq
+  // `lastSeq`: the first seq after it is checked, and a gap reported in one line.
+  void resumeAfter(uint32_t lastSeq) {
+    _seq.resumeAfter(lastSeq);
+    _reportNextGap = true;
+  }
+  // The port went away and came back: report the gap the first message shows.
+  void noteReconnect() { _reportNextGap = true; }
+
   const ListenStats& stats() const { return _stats; }
+  const SeqCounter& seq() const { return _seq; }
   const ctp_stats_t& decoderStats() const { return _decoder.stats; }
 
  private:
@@ -44,8 +55,8 @@ class Listener {
   platform::Reporter& _problems;
   ctp_decoder_t _decoder{};
   ListenStats _stats{};
-  bool _haveSeq{false};
-  uint32_t _lastSeq{0};
+  SeqCounter _seq;
+  bool _reportNextGap{false};
 };
 
 }  // namespace cuetrack::listen

@@ -8,8 +8,10 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "ListenOptions.hpp"
 #include "Listener.hpp"
 #include "cuetrack/platform/CommandText.hpp"
+#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
@@ -20,39 +22,44 @@ namespace {
 
 using namespace cuetrack;
 
-constexpr int kMaxSends = 32;
-
 const char* kUsage =
     "usage: cuetrack-listen PORT [--baud N] [--csv FILE] [--send COMMAND]... [--tracks N]\n"
-    "                       [--idle-timeout SECONDS] [--wait-port SECONDS]\n"
+    "                       [--idle-timeout SECONDS] [--reconnect] [--state FILE]\n"
+    "                       [--wait-port SECONDS]\n"
     "Decodes cuetrack's serial stream (docs/serial-protocol.md): one line per track on\n"
     "stdout, or with --csv a CSV file (header + one row per track; '-' = stdout). Other\n"
-    "messages (ack, error, heartbeat) go to stdout, or to stderr with --csv.\n"
+    "messages (ack, error, heartbeat) go to stdout, or to stderr with --csv. The port is\n"
+    "taken exclusively (lock file, flock, TIOCEXCL): a second listener is refused.\n"
     "  --baud N             9600..921600 (default 115200)\n"
     "  --send COMMAND       start:X,Y,W,H  reset  stop  rate:HZ; sent in order as soon as\n"
-    "                       the first message shows the device is up\n"
-    "  --tracks N           exit after N track messages\n"
+    "                       the first message shows the device is up (may be repeated)\n"
+    "  --tracks N           exit after N track messages (N >= 1)\n"
     "  --idle-timeout S     exit with code 4 when nothing arrives for S seconds\n"
+    "  --reconnect          when the port goes away (USB unplugged), wait for it to come\n"
+    "                       back instead of exiting 1; the seq gap across it is reported\n"
     "  --wait-port S        PORT not there yet (a USB adapter being plugged in, a socat\n"
     "                       pty starting) in a folder that exists: wait up to S seconds\n"
     "                       for it (default 5, 0 = fail at once)\n"
-    "exit codes: 0 interrupted, port closed or --tracks reached; 1 bad command line;\n"
-    "  2 port cannot be opened or a command cannot be sent; 3 the CSV (or, without --csv,\n"
-    "  stdout) write failed; 4 idle timeout\n";
+    "  --state FILE         keep the last seq seen in FILE (written every second and at\n"
+    "                       exit); the next run reports the messages lost in between\n"
+    "The last line gives the totals: messages by type, rejected frames, the first and\n"
+    "last seq seen and the messages lost (seq gaps).\n"
+    "exit codes: 0 interrupted (SIGINT/SIGTERM/SIGHUP) or --tracks reached; 1 the port\n"
+    "  cannot be opened (missing, in use by another program), went away (without\n"
+    "  --reconnect), or a command cannot be sent; 2 bad command line (an option other\n"
+    "  than --send given twice too); 3 the CSV (or, without --csv, stdout) or the state\n"
+    "  file write failed; 4 idle timeout\n";
 
-bool parseInt(const char* s, long lo, long hi, long* out) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(s, &end, 10);
-  if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi) return false;
-  *out = v;
-  return true;
-}
+constexpr int kExitPort = 1;
+constexpr int kExitUsage = 2;
+constexpr int kExitOutput = 3;
+constexpr int kExitIdle = 4;
+constexpr uint64_t kReopenPeriodUs = 500000;
+constexpr uint64_t kStatePeriodUs = 1000000;
 
 // A port path that does not exist yet, in a folder that does (a pty socat is about to
 // link, a USB adapter being plugged in): wait up to waitS for it. True when it waited.
-bool waitForPort(const char* path, long waitS, const platform::MonotonicClock& clock,
-                 platform::Reporter& reporter) {
+bool waitForPort(const char* path, long waitS, platform::Reporter& reporter) {
   if (waitS <= 0 || access(path, F_OK) == 0) return false;
   char dir[512];
   std::snprintf(dir, sizeof dir, "%s", path);
@@ -68,6 +75,7 @@ bool waitForPort(const char* path, long waitS, const platform::MonotonicClock& c
   char line[600];
   std::snprintf(line, sizeof line, "%s: not there yet, waiting up to %ld s for it", path, waitS);
   reporter.report(line);
+  platform::MonotonicClock clock;
   platform::MonotonicSleeper sleeper;
   const uint64_t endUs = clock.nowUs() + static_cast<uint64_t>(waitS) * 1000000u;
   while (access(path, F_OK) != 0 && clock.nowUs() < endUs && !platform::stopRequested()) {
@@ -76,94 +84,70 @@ bool waitForPort(const char* path, long waitS, const platform::MonotonicClock& c
   return true;
 }
 
+// --state FILE: "last_seq N". False when there is no such file (a first run).
+bool readState(const char* path, uint32_t* lastSeq, char* err, size_t errLen) {
+  FILE* f = std::fopen(path, "r");
+  if (!f) return false;
+  unsigned long v = 0;
+  const bool ok = std::fscanf(f, "last_seq %lu", &v) == 1 && v <= 0xffffffffUL;
+  std::fclose(f);
+  if (!ok) std::snprintf(err, errLen, "%s: not a state file (expected 'last_seq N')", path);
+  *lastSeq = static_cast<uint32_t>(v);
+  return ok;
+}
+
+// Written whole or not at all: a temporary name, then rename.
+bool writeState(const char* path, uint32_t lastSeq, char* err, size_t errLen) {
+  char tmp[1024];
+  std::snprintf(tmp, sizeof tmp, "%s.tmp", path);
+  FILE* f = std::fopen(tmp, "w");
+  bool ok = f && std::fprintf(f, "last_seq %u\n", lastSeq) > 0;
+  if (f) ok = std::fclose(f) == 0 && ok;
+  if (ok) ok = std::rename(tmp, path) == 0;
+  if (!ok) {
+    std::snprintf(err, errLen, "%s: cannot write the state file: %s", path, std::strerror(errno));
+    std::remove(tmp);
+  }
+  return ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   platform::StderrReporter problems("cuetrack-listen");
-  const char* portPath = nullptr;
-  const char* csvPath = nullptr;
-  long baud = 115200, maxTracks = -1, idleS = -1, waitPortS = 5;
-  const char* sends[kMaxSends];
-  int numSends = 0;
   char err[768];
-  for (int i = 1; i < argc; ++i) {
-    const char* a = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (std::strcmp(a, "--help") == 0 || std::strcmp(a, "-h") == 0) {
+  static listen::ListenOptions opt;  // static: 32 parsed commands
+  switch (listen::parseListenOptions(argc, argv, &opt, err, sizeof err)) {
+    case listen::ListenParse::Help:
       std::fputs(kUsage, stdout);
-      return 0;
-    } else if (std::strcmp(a, "--baud") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 1, 4000000, &baud) ||
-          !platform::SerialPort::baudSupported(static_cast<int>(baud))) {
-        std::snprintf(err, sizeof err, "--baud %s: unsupported (9600..921600)", argv[i]);
-        problems.report(err);
-        return 1;
-      }
-    } else if (std::strcmp(a, "--csv") == 0 && hasValue) {
-      csvPath = argv[++i];
-    } else if (std::strcmp(a, "--send") == 0 && hasValue) {
-      if (numSends >= kMaxSends) {
-        problems.report("too many --send (at most 32)");
-        return 1;
-      }
-      sends[numSends++] = argv[++i];
-    } else if (std::strcmp(a, "--tracks") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 0, 2000000000L, &maxTracks)) {
-        std::snprintf(err, sizeof err, "--tracks %s: expected a count", argv[i]);
-        problems.report(err);
-        return 1;
-      }
-    } else if (std::strcmp(a, "--idle-timeout") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 1, 86400, &idleS)) {
-        std::snprintf(err, sizeof err, "--idle-timeout %s: expected seconds >= 1", argv[i]);
-        problems.report(err);
-        return 1;
-      }
-    } else if (std::strcmp(a, "--wait-port") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 0, 86400, &waitPortS)) {
-        std::snprintf(err, sizeof err, "--wait-port %s: expected seconds >= 0", argv[i]);
-        problems.report(err);
-        return 1;
-      }
-    } else if (a[0] == '-' && a[1] != '\0') {
-      std::snprintf(err, sizeof err, "unknown option or missing value: '%s' (see --help)", a);
+      return platform::stdoutWritten("cuetrack-listen") ? 0 : kExitOutput;
+    case listen::ListenParse::Error:
       problems.report(err);
-      return 1;
-    } else if (!portPath) {
-      portPath = a;
-    } else {
-      std::snprintf(err, sizeof err, "unexpected argument '%s' (one PORT only)", a);
-      problems.report(err);
-      return 1;
-    }
+      return kExitUsage;
+    case listen::ListenParse::Run:
+      break;
   }
-  if (!portPath) {
-    problems.report("missing PORT (see --help)");
-    return 1;
-  }
-  // Validate every command before touching the port.
-  ctp_command_t commands[kMaxSends];
-  for (int i = 0; i < numSends; ++i) {
-    if (!platform::parseCommandText(sends[i], static_cast<uint16_t>(i + 1), &commands[i], err,
-                                    sizeof err)) {
-      problems.report(err);
-      return 1;
-    }
-  }
+  const char* portPath = opt.portPath;
+  const char* csvPath = opt.csvPath;
+  const char* statePath = opt.statePath;
+  const bool reconnect = opt.reconnect;
+  const long baud = opt.baud, maxTracks = opt.maxTracks, idleS = opt.idleS;
+  const char* const* sends = opt.sends;
+  const ctp_command_t* commands = opt.commands;
+  const int numSends = opt.numSends;
 
   platform::installStopSignals();
   static platform::SerialPort port;
-  platform::MonotonicClock clock;
-  const bool waited = waitForPort(portPath, waitPortS, clock, problems);
+  const bool waited = waitForPort(portPath, opt.waitPortS, problems);
   if (!port.open(portPath, static_cast<int>(baud))) {
     if (waited) {
       std::snprintf(err, sizeof err, "%s (waited %ld s for it; --wait-port SECONDS)", port.error(),
-                    waitPortS);
+                    opt.waitPortS);
       problems.report(err);
     } else {
       problems.report(port.error());
     }
-    return 2;
+    return kExitPort;
   }
   std::snprintf(err, sizeof err, "%s: listening at %ld baud", portPath, baud);
   problems.report(err);
@@ -171,7 +155,7 @@ int main(int argc, char** argv) {
   if (csvPath) {
     if (!tracks.openFile(csvPath, platform::TextFormat::Csv)) {
       problems.report(tracks.error());
-      return 3;
+      return kExitOutput;
     }
   } else {
     tracks.attachStdout(platform::TextFormat::Line);
@@ -179,24 +163,75 @@ int main(int argc, char** argv) {
   // With --csv, stdout may carry the CSV itself: other messages go to stderr.
   platform::LineReporter messages(csvPath ? platform::StdStream::Err : platform::StdStream::Out);
   listen::Listener listener(port, tracks, messages, problems);
+  uint32_t savedSeq = 0;
+  if (statePath && readState(statePath, &savedSeq, err, sizeof err)) {
+    listener.resumeAfter(savedSeq);
+    std::snprintf(err, sizeof err, "%s: the last run ended after seq %u", statePath, savedSeq);
+    problems.report(err);
+  } else if (statePath && err[0]) {
+    problems.report(err);  // a damaged state file: say so, start afresh
+  }
 
-  uint64_t lastRxUs = clock.nowUs();
+  platform::MonotonicClock clock;
+  uint64_t lastRxUs = clock.nowUs(), stateWrittenUs = 0;
+  uint32_t stateSeq = savedSeq;
   int code = 0;
   const char* why = "interrupted";
   bool sent = numSends == 0;
+  auto saveState = [&]() {
+    const listen::SeqCounter& q = listener.seq();
+    if (!statePath || !q.any() || (q.last() == stateSeq && stateWrittenUs != 0)) return true;
+    stateSeq = q.last();
+    stateWrittenUs = clock.nowUs();
+    return writeState(statePath, stateSeq, err, sizeof err);
+  };
   while (!platform::stopRequested()) {
     bool received = false;
     const listen::PollResult r = listener.poll(100, &received);
-    if (r == listen::PollResult::Closed) {
-      why = "port closed";
+    if (r == listen::PollResult::Closed && !reconnect) {
+      std::snprintf(err, sizeof err, "%s: the port went away (%s); --reconnect waits for it",
+                    portPath, port.error());
+      problems.report(err);
+      why = "port went away";
+      code = kExitPort;
       break;
     }
-    if (r == listen::PollResult::OutputFailed) {
-      why = csvPath ? "CSV write failed" : "track output (stdout) write failed";
-      code = 3;
+    if (r == listen::PollResult::Closed) {
+      std::snprintf(err, sizeof err, "%s: the port went away (%s); waiting for it", portPath,
+                    port.error());
+      problems.report(err);
+      port.close();
+      uint64_t triedUs = 0;
+      while (!platform::stopRequested() && !port.isOpen()) {
+        const uint64_t now = clock.nowUs();
+        if (triedUs == 0 || now - triedUs >= kReopenPeriodUs) {
+          triedUs = now;
+          if (port.open(portPath, static_cast<int>(baud))) break;
+        }
+        usleep(50000);  // a slice of the wait, not a synchronisation
+      }
+      if (!port.isOpen()) break;  // interrupted while waiting
+      std::snprintf(err, sizeof err, "%s: the port is back", portPath);
+      problems.report(err);
+      listener.noteReconnect();
+      lastRxUs = clock.nowUs();
+      continue;
+    }
+    if (r == listen::PollResult::OutputFailed || messages.failed()) {
+      why = messages.failed()
+                ? (csvPath ? "message (stderr) write failed" : "message (stdout) write failed")
+            : csvPath ? "CSV write failed"
+                      : "track output (stdout) write failed";
+      code = kExitOutput;
       break;
     }
     if (received) lastRxUs = clock.nowUs();
+    if (clock.nowUs() - stateWrittenUs >= kStatePeriodUs && !saveState()) {
+      problems.report(err);
+      why = "state file write failed";
+      code = kExitOutput;
+      break;
+    }
     const listen::ListenStats& st = listener.stats();
     if (!sent && st.tracks + st.heartbeats + st.acks + st.errors > 0) {
       // The device is up and reading (it flushes its input when it opens the port).
@@ -206,7 +241,7 @@ int main(int argc, char** argv) {
           std::snprintf(err, sizeof err, "%s: cannot send '%s': %s", portPath, sends[i],
                         port.error());
           problems.report(err);
-          return 2;
+          return kExitPort;
         }
       }
     }
@@ -216,18 +251,28 @@ int main(int argc, char** argv) {
     }
     if (idleS > 0 && clock.nowUs() - lastRxUs > static_cast<uint64_t>(idleS) * 1000000u) {
       why = "idle timeout";
-      code = 4;
+      code = kExitIdle;
       break;
     }
   }
+  stateWrittenUs = 0;  // the last seq, whatever the period
+  if (!saveState()) {
+    problems.report(err);
+    if (code == 0) code = kExitOutput;
+  }
   const listen::ListenStats& s = listener.stats();
   const ctp_stats_t& d = listener.decoderStats();
-  std::snprintf(
+  const listen::SeqCounter& q = listener.seq();
+  int n = std::snprintf(
       err, sizeof err,
       "%s: %u tracks, %u heartbeats, %u acks, %u errors; rejected %u (crc %u, framing %u, "
       "overlong %u, version %u); seq gaps %u",
       why, s.tracks, s.heartbeats, s.acks, s.errors, s.rejected, d.crc, d.framing, d.overlong,
       d.version, s.seqGaps);
+  if (q.any() && n > 0 && static_cast<size_t>(n) < sizeof err)
+    n += std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
+                       " (seq first %u last %u, device restarts %u)", q.first(), q.last(),
+                       q.restarts());
   problems.report(err);
   return code;
 }

@@ -1,10 +1,16 @@
 #include "cuetrack/drivers/OpenCvSources.hpp"
 
 #include <dirent.h>
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <cstring>
 #include <opencv2/core.hpp>
@@ -86,12 +92,81 @@ CameraIntrinsics kinectScaled(int w, int h) {
           kKinectV1Intrinsics.cy * sy};
 }
 
+bool isJpegName(const std::string& path) {
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos) return false;
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == "jpg" || ext == "jpeg";
+}
+
+// libjpeg decodes a truncated JPEG without an error (the missing rows come out grey, a
+// warning goes to stderr): a JPEG must end with its end-of-image marker FF D9 (within
+// the last 64 bytes: some writers pad after it). Every JPEG of the shared data does.
+bool jpegHasEnd(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st {};
+  uint8_t tail[64];
+  ssize_t n = -1;
+  if (::fstat(fd, &st) == 0 && st.st_size >= 4) {
+    const off_t from = st.st_size > 64 ? st.st_size - 64 : 0;
+    n = ::pread(fd, tail, static_cast<size_t>(st.st_size - from), from);
+  }
+  ::close(fd);
+  for (ssize_t i = 0; i + 1 < n; ++i)
+    if (tail[i] == 0xff && tail[i + 1] == 0xd9) return true;
+  return false;
+}
+
+// Colour as BGR, but a 16-bit image stays 16-bit so that it can be refused rather than
+// scaled down without a word (8-bit images read exactly as with IMREAD_COLOR alone).
+constexpr int kColourRead = cv::IMREAD_COLOR | cv::IMREAD_ANYDEPTH;
+
+const char* depthName(int cvDepth) {
+  switch (cvDepth) {
+    case CV_8U:
+      return "8-bit";
+    case CV_16U:
+      return "16-bit";
+    case CV_32F:
+      return "32-bit float";
+    default:
+      return "another sample type";
+  }
+}
+
 bool endsWithAvi(const std::string& p) {
   return p.size() > 4 && p.compare(p.size() - 4, 4, ".avi") == 0;
 }
 
 bool gtCountFits(int gt, int frames) {
   return gt == frames || gt == frames - 1;
+}
+
+// FFmpeg conceals a damaged frame (it decodes what it can, the rest is grey or smeared)
+// and says so only through av_log; OpenCV passes on nothing. So the reader counts the
+// errors FFmpeg logs while it reads a frame. The hook goes into the libavutil OpenCV
+// itself is linked with, found by dlsym: no FFmpeg headers, no -dev package. It replaces
+// FFmpeg's printing to stderr (the reader names the frame instead); a build whose OpenCV
+// has no FFmpeg has nothing to hook, and damage is then not detected (docs/recordings.md).
+std::atomic<int> gFfmpegErrors{0};
+
+void countFfmpegErrors(void*, int level, const char*, va_list) {
+  constexpr int kAvLogError = 16;  // AV_LOG_ERROR; lower levels are worse (fatal, panic)
+  if (level <= kAvLogError) gFfmpegErrors.fetch_add(1, std::memory_order_relaxed);
+}
+
+bool hookFfmpegLog() {
+  static const bool hooked = [] {
+    using Callback = void (*)(void*, int, const char*, va_list);
+    using SetCallback = void (*)(Callback);
+    void* sym = dlsym(RTLD_DEFAULT, "av_log_set_callback");
+    if (!sym) return false;
+    reinterpret_cast<SetCallback>(sym)(countFfmpegErrors);
+    return true;
+  }();
+  return hooked;
 }
 
 }  // namespace
@@ -112,6 +187,8 @@ bool BobotVideoReader::open(const char* aviPath, const SourceOptions& opt) {
     std::snprintf(_error, sizeof _error, "%s: no such video file", aviPath);
     return false;
   }
+  _width = _height = 0;
+  hookFfmpegLog();
   if (!_video->cap.open(_path, cv::CAP_FFMPEG) || !_video->cap.isOpened()) {
     std::snprintf(_error, sizeof _error, "%s: cannot open video (not a format OpenCV decodes)",
                   aviPath);
@@ -147,6 +224,7 @@ ReadStatus BobotVideoReader::next(FrameSlot& out) {
       std::snprintf(_error, sizeof _error, "%s: video not open", _path.c_str());
       return ReadStatus::Error;
     }
+    const int errorsBefore = gFfmpegErrors.load(std::memory_order_relaxed);
     if (!_video->cap.read(_img->bgr) || _img->bgr.empty()) {
       // Fewer frames than the container announced, or than the ground truth has boxes
       // (a truncated file's header often announces none): a damaged file, not a clean end.
@@ -164,15 +242,32 @@ ReadStatus BobotVideoReader::next(FrameSlot& out) {
       return ReadStatus::End;
     }
     const int i = _next++;
-    if (!copyColour(_img->bgr, _img->rgb, out)) {
+    const int decodeErrors = gFfmpegErrors.load(std::memory_order_relaxed) - errorsBefore;
+    bool ok = true;
+    if (decodeErrors > 0) {
+      std::snprintf(_error, sizeof _error, "%s: frame %d is damaged (%d decoder errors)",
+                    _path.c_str(), i, decodeErrors);
+      ok = false;
+    } else if (_width > 0 && (_img->bgr.cols != _width || _img->bgr.rows != _height)) {
+      std::snprintf(_error, sizeof _error, "%s: frame %d is %dx%d, the video is %dx%d",
+                    _path.c_str(), i, _img->bgr.cols, _img->bgr.rows, _width, _height);
+      ok = false;
+    } else if (!copyColour(_img->bgr, _img->rgb, out)) {
       std::snprintf(_error, sizeof _error, "%s: frame %d is %dx%d, larger than %dx%d",
                     _path.c_str(), i, _img->bgr.cols, _img->bgr.rows, kMaxImageWidth,
                     kMaxImageHeight);
+      ok = false;
+    }
+    if (!ok) {
       if (_opt.skipBadFrames) {
         ++_skipped;
         continue;
       }
       return ReadStatus::Error;
+    }
+    if (_width == 0) {
+      _width = out.rgb.width();
+      _height = out.rgb.height();
     }
     out.hasDepth = false;
     out.index = i;
@@ -262,9 +357,17 @@ ReadStatus ImageFolderReader::next(FrameSlot& out) {
     if (!rec::isFile(rgbPath.c_str())) {
       std::snprintf(_error, sizeof _error, "%s: not a regular file", rgbPath.c_str());
       ok = false;
-    } else if ((_img->bgr = cv::imread(rgbPath, cv::IMREAD_COLOR)).empty()) {
+    } else if (isJpegName(rgbPath) && !jpegHasEnd(rgbPath)) {
+      std::snprintf(_error, sizeof _error, "%s: truncated JPEG (no end-of-image marker)",
+                    rgbPath.c_str());
+      ok = false;
+    } else if ((_img->bgr = cv::imread(rgbPath, kColourRead)).empty()) {
       std::snprintf(_error, sizeof _error,
                     "%s: cannot decode image (missing, truncated or corrupt)", rgbPath.c_str());
+      ok = false;
+    } else if (_img->bgr.depth() != CV_8U) {
+      std::snprintf(_error, sizeof _error, "%s: colour must be 8 bits per channel, not %s",
+                    rgbPath.c_str(), depthName(_img->bgr.depth()));
       ok = false;
     } else if (_width > 0 && (_img->bgr.cols != _width || _img->bgr.rows != _height)) {
       std::snprintf(_error, sizeof _error, "%s: %dx%d, the sequence is %dx%d", rgbPath.c_str(),
@@ -289,14 +392,15 @@ ReadStatus ImageFolderReader::next(FrameSlot& out) {
       if (!rec::isFile(dPath.c_str())) {
         std::snprintf(_error, sizeof _error, "%s: not a regular file", dPath.c_str());
         ok = false;
-      } else if ((_img->depth = cv::imread(dPath, cv::IMREAD_ANYDEPTH)).empty()) {
+      } else if ((_img->depth = cv::imread(dPath, cv::IMREAD_UNCHANGED)).empty()) {
         std::snprintf(_error, sizeof _error,
                       "%s: cannot decode depth image (missing, truncated or corrupt)",
                       dPath.c_str());
         ok = false;
       } else if (_img->depth.type() != CV_16UC1) {
-        std::snprintf(_error, sizeof _error, "%s: depth must be a 16-bit single-channel PNG",
-                      dPath.c_str());
+        std::snprintf(_error, sizeof _error,
+                      "%s: depth must be 16-bit single-channel, not %s with %d channels",
+                      dPath.c_str(), depthName(_img->depth.depth()), _img->depth.channels());
         ok = false;
       } else if (_img->depth.cols != out.rgb.width() || _img->depth.rows != out.rgb.height()) {
         std::snprintf(_error, sizeof _error, "%s: depth %dx%d does not match colour %dx%d",
@@ -537,13 +641,14 @@ bool BobotVideoWriter::close() {
 
 bool loadDepthPng16(const char* path, FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight>& out,
                     char* err, size_t errLen) {
-  const cv::Mat m = cv::imread(path, cv::IMREAD_ANYDEPTH);
+  const cv::Mat m = cv::imread(path, cv::IMREAD_UNCHANGED);  // a colour PNG stays colour
   if (m.empty()) {
     std::snprintf(err, errLen, "%s: cannot decode image", path);
     return false;
   }
   if (m.type() != CV_16UC1) {
-    std::snprintf(err, errLen, "%s: not a 16-bit single-channel image", path);
+    std::snprintf(err, errLen, "%s: depth must be 16-bit single-channel, not %s with %d channels",
+                  path, depthName(m.depth()), m.channels());
     return false;
   }
   if (!out.resize(m.cols, m.rows)) {
@@ -558,9 +663,14 @@ bool loadDepthPng16(const char* path, FixedImage<uint16_t, kMaxImageWidth, kMaxI
 
 bool loadColourImage(const char* path, FixedImage<Rgb8, kMaxImageWidth, kMaxImageHeight>& out,
                      char* err, size_t errLen) {
-  const cv::Mat m = cv::imread(path, cv::IMREAD_COLOR);
+  const cv::Mat m = cv::imread(path, kColourRead);
   if (m.empty()) {
     std::snprintf(err, errLen, "%s: cannot decode image", path);
+    return false;
+  }
+  if (m.depth() != CV_8U) {
+    std::snprintf(err, errLen, "%s: colour must be 8 bits per channel, not %s", path,
+                  depthName(m.depth()));
     return false;
   }
   if (!out.resize(m.cols, m.rows)) {
@@ -670,10 +780,15 @@ bool StillPanReader::open(const char* spec, const SourceOptions& opt) {
   std::snprintf(corner, sizeof corner, "-%ld-%ld", std::lround(v[0]), std::lround(v[1]));
   _name = "pan-" + (folder.empty() ? std::string() : folder + "-") + stem(rgbPath) + corner;
 
-  const cv::Mat bgr = cv::imread(rgbPath, cv::IMREAD_COLOR);
+  const cv::Mat bgr = cv::imread(rgbPath, kColourRead);
   if (bgr.empty()) {
     std::snprintf(_error, sizeof _error, "%s: cannot decode image (missing, truncated or corrupt)",
                   rgbPath.c_str());
+    return false;
+  }
+  if (bgr.depth() != CV_8U) {
+    std::snprintf(_error, sizeof _error, "%s: colour must be 8 bits per channel, not %s",
+                  rgbPath.c_str(), depthName(bgr.depth()));
     return false;
   }
   if (bgr.cols > kMaxImageWidth || bgr.rows > kMaxImageHeight || bgr.cols < 32 || bgr.rows < 32) {
@@ -681,7 +796,7 @@ bool StillPanReader::open(const char* spec, const SourceOptions& opt) {
                   bgr.cols, bgr.rows, kMaxImageWidth, kMaxImageHeight);
     return false;
   }
-  const cv::Mat depth = cv::imread(depthPath, cv::IMREAD_ANYDEPTH);
+  const cv::Mat depth = cv::imread(depthPath, cv::IMREAD_UNCHANGED);
   if (depth.empty()) {
     std::snprintf(_error, sizeof _error,
                   "%s: cannot decode depth image (missing, truncated or corrupt)",
@@ -689,8 +804,9 @@ bool StillPanReader::open(const char* spec, const SourceOptions& opt) {
     return false;
   }
   if (depth.type() != CV_16UC1) {
-    std::snprintf(_error, sizeof _error, "%s: depth must be a 16-bit single-channel image",
-                  depthPath.c_str());
+    std::snprintf(_error, sizeof _error,
+                  "%s: depth must be 16-bit single-channel, not %s with %d channels",
+                  depthPath.c_str(), depthName(depth.depth()), depth.channels());
     return false;
   }
   if (depth.cols != bgr.cols || depth.rows != bgr.rows) {

@@ -32,6 +32,7 @@ bool FdTrackSink::openFile(const char* path, TextFormat format) {
     const int flags = ::fcntl(_fd, F_GETFL);
     if (flags >= 0) ::fcntl(_fd, F_SETFL, flags & ~O_NONBLOCK);
     _ownsFd = true;
+    _wholeBytes = 0;
   }
   if (format == TextFormat::Csv) {
     const char* h = trackCsvHeader();
@@ -40,10 +41,25 @@ bool FdTrackSink::openFile(const char* path, TextFormat format) {
   return true;
 }
 
+bool FdTrackSink::close() {
+  if (!_ownsFd || _fd < 0) return true;
+  const bool synced = ::fsync(_fd) == 0 || errno == EINVAL || errno == EROFS;  // not a file
+  const int syncErr = errno;
+  const bool closed = ::close(_fd) == 0;
+  const int closeErr = errno;
+  _fd = -1;
+  _ownsFd = false;
+  if (synced && closed) return true;
+  std::snprintf(_error, sizeof _error, "%s: write failed at close: %s", _name,
+                std::strerror(synced ? closeErr : syncErr));
+  return false;
+}
+
 void FdTrackSink::attachStdout(TextFormat format) {
   _format = format;
   _fd = 1;
   _ownsFd = false;
+  _wholeBytes = -1;  // a pipe or terminal cannot be cut back
   std::snprintf(_name, sizeof _name, "stdout");
 }
 
@@ -59,16 +75,24 @@ bool FdTrackSink::writeAll(const char* data, size_t len) {
     std::snprintf(_error, sizeof _error, "%s: not open", _name);
     return false;
   }
-  while (len > 0) {
-    const ssize_t w = ::write(_fd, data, len);
+  const size_t whole = len;
+  size_t done = 0;
+  while (done < len) {
+    const ssize_t w = ::write(_fd, data + done, len - done);
     if (w < 0) {
       if (errno == EINTR) continue;
-      std::snprintf(_error, sizeof _error, "%s: write failed: %s", _name, std::strerror(errno));
+      const int err = errno;
+      // A full disk takes part of a row and refuses the rest: cut the file back to its
+      // last whole row, so a reader never takes half a row for a short one.
+      const bool cut = done > 0 && _wholeBytes >= 0 && ::ftruncate(_fd, _wholeBytes) == 0 &&
+                       ::lseek(_fd, _wholeBytes, SEEK_SET) == _wholeBytes;
+      std::snprintf(_error, sizeof _error, "%s: write failed: %s%s", _name, std::strerror(err),
+                    cut ? " (the partial row was removed)" : "");
       return false;
     }
-    data += w;
-    len -= static_cast<size_t>(w);
+    done += static_cast<size_t>(w);
   }
+  if (_wholeBytes >= 0) _wholeBytes += static_cast<off_t>(whole);
   return true;
 }
 

@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/file.h>
+#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -57,16 +59,34 @@ bool SerialPort::open(const char* path, int baud) {
                   baud);
     return false;
   }
-  return openFd();
+  // The lock file first: it names the holder, which the device's own locks cannot.
+  if (!_lock.acquire(_path, _error, sizeof _error)) return false;
+  if (!openFd()) {
+    _lock.release();
+    return false;
+  }
+  return true;
 }
 
 bool SerialPort::reopen() {
   if (_fd >= 0) return true;
-  return openFd();
+  // close() gave up the lock file with the device: take it again first (the holder of a
+  // device that came back to someone else is named, and we stay out).
+  const bool takeLock = !_lock.held();
+  if (takeLock && !_lock.acquire(_path, _error, sizeof _error)) return false;
+  if (!openFd()) {
+    if (takeLock) _lock.release();  // a lock kept through an outage stays ours
+    return false;
+  }
+  return true;
 }
 
 bool SerialPort::openFd() {
   const int fd = ::open(_path, O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0 && errno == EBUSY) {  // another program set TIOCEXCL
+    inUse("opened exclusively");
+    return false;
+  }
   if (fd < 0) {
     std::snprintf(_error, sizeof _error, "%s: cannot open: %s", _path, std::strerror(errno));
     return false;
@@ -79,6 +99,14 @@ bool SerialPort::openFd() {
     ::close(fd);
     return false;
   }
+  // One program per port: flock covers programs that skip lock files; TIOCEXCL makes
+  // further open()s fail with EBUSY (except for root).
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+    ::close(fd);
+    inUse("locked");
+    return false;
+  }
+  ::ioctl(fd, TIOCEXCL);
   cfmakeraw(&tio);  // no echo, no line editing, no CR/LF translation, 8 bits
   tio.c_cflag &= ~static_cast<tcflag_t>(PARENB | CSTOPB | CSIZE | CRTSCTS);
   tio.c_cflag |= CS8 | CLOCAL | CREAD;
@@ -99,15 +127,29 @@ bool SerialPort::openFd() {
   return true;
 }
 
-void SerialPort::close() {
+void SerialPort::closeFd() {
   if (_fd >= 0) ::close(_fd);
   _fd = -1;
+}
+
+void SerialPort::close() {
+  closeFd();
+  _lock.release();
+}
+
+void SerialPort::inUse(const char* how) {
+  const long pid = _lock.holder(_path);
+  if (pid > 0)
+    std::snprintf(_error, sizeof _error, "%s: in use by process %ld (%s)", _path, pid, how);
+  else
+    std::snprintf(_error, sizeof _error, "%s: in use by another program (%s; holder unknown)",
+                  _path, how);
 }
 
 IoResult SerialPort::fail(const char* what, int err) {
   std::snprintf(_error, sizeof _error, "%s: %s: %s", _path, what, std::strerror(err));
   if (isGone(err)) {
-    close();
+    closeFd();  // the lock stays ours until the device is back (reopen) or close()
     return {IoStatus::Closed, 0};
   }
   return {IoStatus::Error, 0};

@@ -27,6 +27,7 @@ void installStopSignals() {
   sa.sa_flags = 0;  // no SA_RESTART: a blocking poll/read returns EINTR and the loop sees the flag
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
+  sigaction(SIGHUP, &sa, nullptr);  // the terminal or ssh session went: stop as cleanly
   ignoreWriteSignals();
 }
 

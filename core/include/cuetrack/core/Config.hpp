@@ -28,11 +28,9 @@ inline constexpr uint16_t kMaxDepthMm = 10000;
 inline constexpr int kMaxParticles = 2000;  // the paper's runs use 2000
 
 // ---- Observation model ----------------------------------------------------
-inline constexpr int kMaxWeakClassifiers = 32;      // M: 23 (RGB-D) and 32 (RGB) in the paper
-inline constexpr int kMaxTrainingExamples = 140;    // positives + negatives, as in the paper
-inline constexpr int kMaxTemplateScaleSteps = 4;    // TemplateAnchor: ladder half-width K
-inline constexpr int kMaxSearchRefineWindows = 16;  // LostSearch: windows climbed a frame
-inline constexpr int kNumFeatureKinds = 3;          // grayscale gradient, depth gradient, colour
+inline constexpr int kMaxWeakClassifiers = 32;    // M: 23 (RGB-D) and 32 (RGB) in the paper
+inline constexpr int kMaxTrainingExamples = 140;  // positives + negatives, as in the paper
+inline constexpr int kNumFeatureKinds = 3;        // grayscale gradient, depth gradient, colour
 inline constexpr int kDynamicFeaturesPerKind = 50;
 // Pool capacity: the sparse pool is 3 kinds x (30 static + 50 dynamic) = 240; the
 // dense (old) pool 3 x 84 = 252 (FeaturePool.hpp).

@@ -21,14 +21,12 @@
 #include "cuetrack/core/Gate.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/LostSearch.hpp"
-#include "cuetrack/core/ModeGuard.hpp"
 #include "cuetrack/core/NegativeSampler.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
 #include "cuetrack/core/SizeFilter.hpp"
 #include "cuetrack/core/StrongClassifier.hpp"
-#include "cuetrack/core/TemplateAnchor.hpp"
 #include "cuetrack/core/TrackResult.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
 #include "cuetrack/core/TrainingSet.hpp"
@@ -51,9 +49,8 @@ const char* toString(InitError e);
 
 // The members are components (particle filter, observation model, feature pool,
 // training set, negative sampler, update gate and lost detector, and the beyond-the-paper
-// cylinder sizer, template anchor, size filter, lost search, mode guard, fast motion and
-// depth guard), each a fixed-size class of its own with its own tests; Tracker wires
-// them and keeps the track's state. It is large
+// cylinder sizer, size filter, lost search, depth guard and fast motion), each a fixed-size class
+// of its own with its own tests; Tracker wires them and keeps the track's state. It is large
 // (MiBs): give it static storage or allocate it once.
 class Tracker {
  public:
@@ -89,9 +86,9 @@ class Tracker {
                     bool wasLost);                 // motion (+ search while lost); the ROI
   void correctDepths(float dtS);                   // 3D: every particle onto the surface
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
-  Estimate estimate(bool wasLost);                 // weights and the estimate
+  Estimate estimate();                             // weights and the estimate
   // Lost detection, the update gate and learning; true when learnt.
-  bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi, float dtS);
+  bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi);
 
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
   Box particleBox(const Particle& q) const;
@@ -117,11 +114,10 @@ class Tracker {
   int _imageW = 0, _imageH = 0;
   CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
-  FastMotion _fast{};              // fastMotion: jumping particles, coasting over dropped frames
-  Box _lastBox{};                  // the window tracked (padded for a small target)
-  WindowPadding _padding{};        // target -> window, for a target under kMinTrackedSidePx
-  SizeFilter2d _sizeFilter{};      // 2D: the estimate's size, smoothed
-  TemplateAnchor _templateAnchor;  // 2D, scaleAnchor2d: the init box's grey template
+  FastMotion _fast{};          // fastMotion: jumping particles, coasting over dropped frames
+  Box _lastBox{};              // the window tracked (padded for a small target)
+  WindowPadding _padding{};    // target -> window, for a target under kMinTrackedSidePx
+  SizeFilter2d _sizeFilter{};  // 2D: the estimate's size, smoothed
   Particle _lastEstimate{};
   int _lostFrames = 0;     // lost detection (beyond the paper): frames since declared lost
   DepthGuard _depthGuard;  // ... 3D: the estimate's depth against the confirmed one
@@ -136,7 +132,6 @@ class Tracker {
   float _scores[kMaxParticles];
   uint8_t _valid[kMaxParticles];
   ScanOrder _scanOrder;
-  ModeGuard _modeGuard;  // modeGuard: a split cloud's best mode
   float _featureErrors[kMaxPoolFeatures];
   NegativeSampler _negatives{};
   CylinderSizer _sizer{};    // adaptCylinderSize: D, H and the centre follow the depth silhouette

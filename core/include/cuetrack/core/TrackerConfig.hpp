@@ -32,15 +32,6 @@ struct TrackerConfig {
   bool adaptCylinderSize = false;  // D, H (and centre) follow the silhouette measured in depth
   bool lostDetection = false;      // declare lost, freeze learning, re-acquire
   bool fallbackTo2d = false;       // 3D/depth requested but the frame has none: run 2D RGB
-  bool scaleAnchor2d = false;      // 2D: size and centre follow the init template's best match
-  bool templateShift = true;       // scaleAnchor2d: the centre too, not only the size
-  bool anchorMovesCloud = false;   // scaleAnchor2d: the particles follow part of its correction
-  bool modeGuard = false;     // a split cloud: estimate from the best particle's mode, not the mean
-  bool refineSearch = false;  // lostDetection: the best fresh search windows climb to a peak
-  // lostDetection, 3D: no learning from an estimate well off the depth it was last
-  // confirmed or smoothly followed at (a cloud sliding onto the wall behind a
-  // low-contrast target would teach the wall; DepthGuard).
-  bool learnDepthCheck = true;
   // Fast targets and slow or dropped frames: after a learnt frame some particles jump
   // (FastMotion); in 2D a particle coasts on its velocity over dropped frames.
   bool fastMotion = false;

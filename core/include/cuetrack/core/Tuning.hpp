@@ -85,24 +85,6 @@ inline constexpr float kGain = 0.3f;       // alpha
 inline constexpr float kRateGain = 0.05f;  // beta: steady zooms followed without lag
 }  // namespace size2d
 
-namespace templateAnchor {                  // scaleAnchor2d
-inline constexpr int kScaleSteps = 2;       // K: a (2K+1)^2 ladder of widths x heights
-inline constexpr float kScaleStep = 0.04f;  // ladder step of ln w, ln h
-inline constexpr float kMinNcc = 0.85f;     // best match needed to move anything
-inline constexpr float kGain = 0.3f;        // part of the ladder's size correction applied
-inline constexpr float kShiftStep = 0.02f;  // templateShift: -2..2 shifts of this part of the side
-inline constexpr float kShiftGain = 0.6f;   // part of the shift correction applied
-inline constexpr float kCloudGain = 0.5f;   // anchorMovesCloud: part applied to every particle
-}  // namespace templateAnchor
-
-namespace modeGuard {
-// The weighted mean scores this far below the best particle, which is itself at least
-// this confident ((c + 1) / 2): the cloud has split.
-inline constexpr float kMargin = 0.2f;
-inline constexpr float kMinConfidence = 0.7f;
-inline constexpr float kModeOverlap = 0.5f;  // the mode: particles overlapping the best this much
-}  // namespace modeGuard
-
 namespace lost {                             // LostDetector
 inline constexpr float kLostBelow = 0.42f;   // confidence under which a frame is a miss
 inline constexpr int kLostAfter = 4;         // misses in a row that make the target lost
@@ -122,21 +104,12 @@ inline constexpr int kEvery = 2;
 inline constexpr float kGrowth = 0.25f;
 inline constexpr float kScaleNoise2d = 0.15f;  // 2D: std of ln(scale) of a fresh window
 inline constexpr float kInside = 0.8f;         // a window must lie this much inside the image
-// refineSearch: the best this many fresh windows climb to their peak, in steps of
-// kRefineStep of their side, halved when no neighbour scores higher, kRefineSteps times.
-inline constexpr int kRefineWindows = 8;
-inline constexpr float kRefineStep = 0.12f;
-inline constexpr int kRefineSteps = 6;
 }  // namespace search
 
 namespace depthGuard {  // 3D, lostDetection
 // The estimate's depth over the last confirmed one (or its inverse) below this: the cloud
 // has jumped onto something in front or behind; a miss, and not learnt.
 inline constexpr float kJumpRatio = 0.75f;
-// learnDepthCheck: no learning from an estimate more than this part off the learning
-// reference, which follows the estimate while it moves by at most kFollow a frame at 30 fps.
-inline constexpr float kLearnMaxChange = 0.12f;
-inline constexpr float kFollow = 0.03f;
 }  // namespace depthGuard
 
 }  // namespace cuetrack::tuning

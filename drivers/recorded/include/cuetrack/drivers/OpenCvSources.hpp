@@ -1,7 +1,8 @@
 // OpenCV-backed readers and writers (host only; library cuetrack_recorded_cv, built
 // when CUETRACK_WITH_OPENCV). No OpenCV type appears here: decoders live in the .cpp.
 //
-//   BobotVideoReader  NAME.avi + NAME.gt.txt (or SourceOptions::gtPath); frame N <-> GT N
+//   BobotVideoReader  NAME.avi + NAME.gt.txt (or SourceOptions::gtPath); frame N <-> GT N;
+//                     a frame FFmpeg reports errors for while decoding is damaged
 //   RgbdFolderReader  rgb/*.png, depth/*.png (16-bit mm), groundtruth.txt (BoBoT),
 //                     intrinsics.txt ("fx fy cx cy"); images paired by sorted file name
 //   OtbFolderReader   img/0001.jpg ..., groundtruth_rect.txt (x,y,w,h 1-based px)
@@ -44,6 +45,7 @@ class BobotVideoReader final : public FrameSource {
   int _frameCount = -1;
   int _next = 0;
   int _skipped = 0;
+  int _width = 0, _height = 0;  // of the first frame read: every frame must match
   double _fps = 25.0;
   char _error[512] = "";
 };

@@ -1,16 +1,20 @@
 // A serial device through termios: 8N1, raw, no flow control, non-blocking.
 // Reads wait with poll(); writes never wait (a full buffer gives WouldBlock).
 // A vanished device (USB unplugged, pty peer gone) gives Closed; reopen()
-// opens the same path again when it is back.
+// opens the same path again when it is back. The port is ours alone while open: a UUCP
+// lock file (PortLock), flock() and TIOCEXCL; a second opener is refused with a line
+// naming the holder's PID when known.
 #pragma once
 
 #include "cuetrack/platform/ByteStream.hpp"
+#include "cuetrack/platform/linux/PortLock.hpp"
 
 namespace cuetrack::platform {
 
 class SerialPort final : public ByteStream {
  public:
   SerialPort() = default;
+  explicit SerialPort(const char* lockDir) : _lock(lockDir) {}
   ~SerialPort() override;
   SerialPort(const SerialPort&) = delete;
   SerialPort& operator=(const SerialPort&) = delete;
@@ -24,14 +28,17 @@ class SerialPort final : public ByteStream {
   bool waitWritable(int timeoutMs) override;
   bool isOpen() const override { return _fd >= 0; }
   bool reopen() override;
-  void close() override;
+  void close() override;  // also gives up the lock
   const char* error() const override { return _error; }
   const char* name() const override { return _path; }
 
  private:
   bool openFd();
+  void closeFd();
+  void inUse(const char* how);
   IoResult fail(const char* what, int err);
 
+  PortLock _lock;
   int _fd{-1};
   int _baud{115200};
   char _path[256]{};

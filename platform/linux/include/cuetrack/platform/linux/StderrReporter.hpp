@@ -21,9 +21,11 @@ class LineReporter final : public Reporter {
  public:
   explicit LineReporter(StdStream stream) : _stream(stream) {}
   void report(const char* line) override;
+  bool failed() const { return _failed; }  // a line could not be written (/dev/full...)
 
  private:
   StdStream _stream;
+  bool _failed = false;
 };
 
 }  // namespace cuetrack::platform

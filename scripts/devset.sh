@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# The development set in one command: cuetrack-bench over every sequence of
+# ../shared/data/otb (13 real videos), ../shared/data/bobot (BoBoT C, E, H) and the
+# team's synthetic RGB-D scenes, CONFIG... (default: best 1.1) with 5 seeds each,
+# beside OpenCV's CSRT, KCF and MedianFlow (deterministic: run once, cached).
+#
+#   scripts/devset.sh [CONFIG...]        e.g. scripts/devset.sh best best-nolost 1.1
+#
+# Prints one row per sequence and the averages with their seed-to-seed spread, AUC and
+# precision at 20 px; writes OTB success and precision plots. The rule for a tracking
+# change (docs/algorithm.md): keep it only if the average overlap rises by more than the
+# spread and no sequence falls by more than it.
+# Environment: CUETRACK_SHARED_DIR (default ../shared), BUILD (default build/host),
+# OUT (default build/devset), PEER_CACHE (default $OUT/peer-cache), RUNS (5), PEERS (opencv-csrt,opencv-kcf,opencv-medianflow;
+# empty for none), FRAMES (cut every sequence; quick checks only).
+# Exit: 0 done; 1 a sequence or output failed; 77 no ../shared (skipped, with a message).
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+cd "$ROOT"
+SHARED=${CUETRACK_SHARED_DIR:-$ROOT/../shared}
+BUILD=${BUILD:-build/host}
+OUT=${OUT:-build/devset}
+RUNS=${RUNS:-5}
+PEERS=${PEERS-opencv-csrt,opencv-kcf,opencv-medianflow}
+FRAMES=${FRAMES:-}
+SCENES=(moving twin-crossing occlusion untextured lighting approach box turn)
+configs=("$@")
+[ ${#configs[@]} -eq 0 ] && configs=(best 1.1)
+
+if [ ! -d "$SHARED/data/otb" ] || [ ! -d "$SHARED/data/bobot" ]; then
+  echo "devset.sh: skipped: no development set at $SHARED/data/{otb,bobot} (set CUETRACK_SHARED_DIR)" >&2
+  exit 77
+fi
+
+BENCH="$BUILD/bin/cuetrack-bench"
+if [ ! -x "$BENCH" ] || [ -n "$(find core apps drivers platform -newer "$BENCH" -name '*.[ch]pp' -print -quit)" ]; then
+  echo "devset.sh: building cuetrack-bench in $BUILD" >&2
+  { [ -f "$BUILD/CMakeCache.txt" ] || cmake --preset host -B "$BUILD" >/dev/null; } &&
+    cmake --build "$BUILD" --target cuetrack-bench -j"$(nproc)" >/dev/null ||
+    { echo "devset.sh: the build of cuetrack-bench failed (run: cmake --build $BUILD --target cuetrack-bench)" >&2; exit 1; }
+fi
+
+seqs=()
+for d in "$SHARED"/data/otb/*/; do [ -f "$d/groundtruth_rect.txt" ] && seqs+=("${d%/}"); done
+for v in "$SHARED"/data/bobot/*.avi; do seqs+=("$v"); done
+for s in "${SCENES[@]}"; do seqs+=("synth:$s"); done
+
+mkdir -p "$OUT"
+trackers=cuetrack
+[ -n "$PEERS" ] && trackers="cuetrack,$PEERS"
+frames_opt=()
+[ -n "$FRAMES" ] && frames_opt=(--frames "$FRAMES")
+cmd=("$BENCH" --quiet --tracker "$trackers" --config "$(IFS=,; echo "${configs[*]}")"
+     --runs "$RUNS" --peer-runs 1 --peer-cache "${PEER_CACHE:-$OUT/peer-cache}" "${frames_opt[@]}"
+     --json "$OUT/devset.json" --markdown "$OUT/devset-bench.md" --plots "$OUT/plots"
+     "${seqs[@]}")
+start=$(date +%s)
+status=0
+"${cmd[@]}" > "$OUT/devset-bench.txt" || status=$?
+python3 scripts/devset_table.py "$OUT/devset.json" "$OUT/devset.md"
+echo
+echo "${#seqs[@]} sequences, $RUNS seeds, $(( $(date +%s) - start )) s. Plots: $OUT/plots/success.png," \
+     "$OUT/plots/precision.png (and one per sequence); Markdown: $OUT/devset.md; JSON: $OUT/devset.json"
+exit $status

@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""The development set's table from cuetrack-bench --json: one row per sequence, one
+column per tracker entry (mean overlap over seeds, %), then the averages, their
+seed-to-seed spread, hit rate, AUC and precision at 20 px. With two or more cuetrack
+entries, the last column is the first minus the second, '*' where the difference is
+larger than the spread of either (the team's rule for a change: docs/algorithm.md).
+Usage: devset_table.py DEVSET.json [OUT.md]"""
+import json
+import sys
+
+
+def fmt(v, d=1):
+    return "n/a" if v is None else f"{v:.{d}f}"
+
+
+def main():
+    entries = json.load(open(sys.argv[1]))
+    if isinstance(entries, dict):
+        entries = [entries]
+    label = [e["tracker"] if e["config"] == "default" else
+             ("" if e["tracker"] == "cuetrack" else e["tracker"] + " ") + e["config"]
+             for e in entries]
+    label = [l.replace("opencv-", "") for l in label]
+    ours = [i for i, e in enumerate(entries) if e["tracker"] == "cuetrack"]
+    delta = len(ours) >= 2
+    names = [s["name"] for s in entries[0]["sequences"]]
+    head = ["sequence"] + label + ([f"{label[ours[0]]} - {label[ours[1]]}"] if delta else [])
+    rows = []
+    for k, name in enumerate(names):
+        row = [name]
+        for e in entries:
+            s = e["sequences"][k]
+            row.append(fmt(s["overlap"]) if s["overlap"] is not None else "not run")
+        if delta:
+            a, b = entries[ours[0]]["sequences"][k], entries[ours[1]]["sequences"][k]
+            if a["overlap"] is None or b["overlap"] is None:
+                row.append("")
+            else:
+                d = a["overlap"] - b["overlap"]
+                spread = max(a["overlap_spread"] or 0, b["overlap_spread"] or 0)
+                row.append(f"{d:+.1f}" + ("*" if abs(d) > spread else ""))
+        rows.append(row)
+    avg = [e["average"] for e in entries]
+    summary = [
+        ["average overlap"] + [fmt(a["overlap"], 2) for a in avg],
+        ["seed spread (s.d.)"] + [fmt(a["overlap_spread"], 2) if a["overlap_runs"] and len(a["overlap_runs"]) > 1 else "-" for a in avg],
+        ["average hit rate"] + [fmt(a["hit"], 2) for a in avg],
+        ["AUC (success plot)"] + [fmt(a["auc"], 2) for a in avg],
+        ["precision at 20 px"] + [fmt(a["precision20"], 2) for a in avg],
+        ["ms per frame (mean)"] + [fmt(a["ms_mean"], 2) for a in avg],
+    ]
+    if delta:
+        a, b = avg[ours[0]], avg[ours[1]]
+        d = a["overlap"] - b["overlap"]
+        spread = max(a["overlap_spread"] or 0, b["overlap_spread"] or 0)
+        summary[0].append(f"{d:+.2f}" + ("*" if abs(d) > spread else ""))
+        for r in summary[1:]:
+            r.append("")
+    widths = [max(len(str(r[i])) for r in [head] + rows + summary) for i in range(len(head))]
+    line = lambda r: "  ".join(str(c).ljust(widths[0]) if i == 0 else str(c).rjust(widths[i])
+                               for i, c in enumerate(r))
+    print("Mean overlap [%] over seeds, per sequence; averages over the sequences")
+    print(line(head))
+    for r in rows:
+        print(line(r))
+    print("-" * len(line(head)))
+    for r in summary:
+        print(line(r))
+    if len(sys.argv) > 2:
+        with open(sys.argv[2], "w") as f:
+            f.write("| " + " | ".join(head) + " |\n|---|" + "---:|" * (len(head) - 1) + "\n")
+            for r in rows:
+                f.write("| " + " | ".join(r) + " |\n")
+            for r in summary:
+                f.write("| **" + r[0] + "** | " + " | ".join(r[1:]) + " |\n")
+
+
+if __name__ == "__main__":
+    main()
