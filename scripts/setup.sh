@@ -15,6 +15,8 @@ HOST_PKGS=(
   qemu-user                          # runs ARM test binaries; has the plugin API for icount
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf
   python3
+  xvfb xdotool x11-apps              # tests/apps test_app_view: cuetrack --show/--select under
+                                     # a virtual display, driven by xdotool, dumped by xwd
 )
 CROSS_PKGS=(
   libfreenect-dev:arm64 libusb-1.0-0-dev:arm64 libfreenect0.5:arm64 libstdc++6:arm64

@@ -136,6 +136,7 @@ Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<dou
       centerSum += r.centerPx;
       ++centerRuns;
     }
+    if (r.frames > 0) f.centerPct += 100.0 * r.centerFrames / r.frames;
     if (r.centerMmFrames > 0) {
       centerMmSum += r.centerMm;
       centerZMmSum += r.centerZMm;
@@ -147,6 +148,7 @@ Figures aggregateRuns(const std::vector<RunFigures>& runs, const std::vector<dou
   f.overlap /= n;
   f.hit /= n;
   f.pascal /= n;
+  f.centerPct /= n;
   curveFigures(&f);
   if (centerRuns > 0) f.centerPx = centerSum / centerRuns;
   if (centerMmRuns > 0) {
@@ -187,6 +189,7 @@ Figures averageFigures(const std::vector<Figures>& sequences) {
     a.overlap += s.overlap;
     a.hit += s.hit;
     a.pascal += s.pascal;
+    a.centerPct += s.centerPct;
     a.msMedian += s.msMedian;
     a.msMean += s.msMean;
     a.allocs += s.allocs;
@@ -206,6 +209,7 @@ Figures averageFigures(const std::vector<Figures>& sequences) {
   a.overlap /= n;
   a.hit /= n;
   a.pascal /= n;
+  a.centerPct /= n;
   a.msMedian /= n;
   a.msMean /= n;
   a.allocs /= n;

@@ -91,6 +91,7 @@ struct Figures {
   double hit = 0.0;         // [%]
   double pascal = 0.0;      // [%]
   double centerPx = 0.0;    // [px], NaN = undefined
+  double centerPct = 0.0;   // frames centerPx is over (both boxes exist) [% of frames]
   double centerMm = 0.0;    // 3D centre error [mm], NaN = undefined (no 3D truth or position)
   double centerZMm = 0.0;   // its z part, mean |z error| [mm], NaN likewise
   double msMedian = 0.0;    // tracking time per frame [ms]

@@ -81,13 +81,15 @@ const char* usage() {
          "  --results DIR      BoBoT result files, DIR/<sequence>/<tracker>[-<config>].run<n>.txt\n"
          "                     (n = 1.. for seeds seed..)\n"
          "  --overlay DIR      frames with the boxes of run 1 drawn, DIR/<sequence>/NNNNNN.jpg\n"
+         "  --video DIR        the same as one video per sequence, DIR/<sequence>.avi (Motion\n"
+         "                     JPEG, 30 fps), with a legend of the trackers' colours\n"
          "  --quiet            no progress on stderr\n"
          "exit codes: 0 every sequence was sound and every output was written (a tracker\n"
          "  that cannot run on a sequence is reported and listed, not a failure); 1 a\n"
          "  sequence was missing or broken (unreadable, no ground truth, a first box outside\n"
          "  the image, frames changing size) or an output (stdout, --json, --markdown, --csv,\n"
-         "  --plots, --results, --overlay) failed: each is reported and the rest goes on;\n"
-         "  2 bad command line\n";
+         "  --plots, --results, --overlay, --video) failed: each is reported and the rest\n"
+         "  goes on; 2 bad command line\n";
 }
 
 bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std::string* err) {
@@ -209,7 +211,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       }
       o->seed = s;
     } else if (a == "--json" || a == "--markdown" || a == "--csv" || a == "--plots" ||
-               a == "--results" || a == "--overlay" || a == "--peer-cache") {
+               a == "--results" || a == "--overlay" || a == "--peer-cache" || a == "--video") {
       if (!value(&v)) return false;
       std::string& dst = a == "--json"         ? o->jsonPath
                          : a == "--markdown"   ? o->markdownPath
@@ -217,6 +219,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
                          : a == "--plots"      ? o->plotDir
                          : a == "--overlay"    ? o->overlayDir
                          : a == "--peer-cache" ? o->peerCacheDir
+                         : a == "--video"      ? o->videoDir
                                                : o->resultsDir;
       dst = v;
     } else if (a == "--paper") {

@@ -32,7 +32,7 @@ struct Options {
   bool skipBadFrames = false;
   bool rgbOnly = false;  // drop the depth of every sequence (tests the trackers' RGB-only mode)
   bool quiet = false;
-  std::string jsonPath, markdownPath, csvDir, plotDir, resultsDir, overlayDir;
+  std::string jsonPath, markdownPath, csvDir, plotDir, resultsDir, overlayDir, videoDir;
   std::string peerCacheDir;  // --peer-cache: the OpenCV peers' results, reused (PeerCache.hpp)
   PaperReference paper = PaperReference::None;
 };

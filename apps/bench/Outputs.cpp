@@ -9,6 +9,7 @@
 #include <cstring>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "Runner.hpp"
 
@@ -229,25 +230,57 @@ bool writeCurvePlot(const std::string& path, const std::vector<EntryResult>& ent
   return false;
 }
 
-bool writeOverlayFrames(const std::string& dir, const Sequence& seq,
-                        const std::vector<EntryResult>& entries, size_t sequence,
-                        std::string* err) {
-  if (!makeDirs(dir, err)) return false;
+namespace {
+
+constexpr int kLegendRowPx = 18;
+
+// Frame i of the sequence with the ground truth (white) and each entry's first-run box (the
+// plot's colours) drawn in, and under it a legend: the frame number, then one row per
+// entry ("lost" where it had no box).
+cv::Mat overlayImage(const Sequence& seq, size_t i, const std::vector<EntryResult>& entries,
+                     size_t sequence) {
+  const CachedFrame& f = seq.frames[i];
   const size_t palette = sizeof kPalette / sizeof kPalette[0];
   auto rect = [](const Box& b) {
     return cv::Rect(cvRound(b.x), cvRound(b.y), cvRound(b.w), cvRound(b.h));
   };
+  const int rows = 1 + static_cast<int>(entries.size());
+  cv::Mat img(f.bgr.rows + kLegendRowPx * rows + 4, f.bgr.cols, CV_8UC3, cv::Scalar(32, 32, 32));
+  f.bgr.copyTo(img(cv::Rect(0, 0, f.bgr.cols, f.bgr.rows)));
+  const bool truth = f.hasGroundTruth && !f.groundTruth.empty();
+  if (truth) cv::rectangle(img, rect(f.groundTruth), cv::Scalar(255, 255, 255), 2);
+  char line[256];
+  std::snprintf(line, sizeof line, "frame %d   ground truth (white)%s", f.index,
+                f.hasGroundTruth && !truth ? ": not visible" : "");
+  int y = f.bgr.rows + kLegendRowPx - 4;
+  cv::putText(img, line, {6, y}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(255, 255, 255), 1,
+              cv::LINE_AA);
+  for (size_t e = 0; e < entries.size(); ++e) {
+    const SequenceResult& s = entries[e].sequences[sequence];
+    const cv::Scalar colour = kPalette[e % palette];
+    const bool hasBox = s.ran && i < s.firstRunBoxes.size() && !s.firstRunBoxes[i].empty();
+    if (hasBox) cv::rectangle(img, rect(s.firstRunBoxes[i]), colour, 2);
+    std::snprintf(line, sizeof line, "%s%s", entries[e].label().c_str(),
+                  !s.ran   ? ": did not run"
+                  : hasBox ? ""
+                           : ": lost");
+    y += kLegendRowPx;
+    cv::line(img, {6, y - 4}, {26, y - 4}, colour, 2);
+    cv::putText(img, line, {32, y}, cv::FONT_HERSHEY_SIMPLEX, 0.45, colour, 1, cv::LINE_AA);
+  }
+  return img;
+}
+
+}  // namespace
+
+bool writeOverlayFrames(const std::string& dir, const Sequence& seq,
+                        const std::vector<EntryResult>& entries, size_t sequence,
+                        std::string* err) {
+  if (!makeDirs(dir, err)) return false;
   for (size_t i = 0; i < seq.frames.size(); ++i) {
     const CachedFrame& f = seq.frames[i];
     if (f.bgr.empty()) continue;
-    cv::Mat img = f.bgr.clone();
-    if (f.hasGroundTruth && !f.groundTruth.empty())
-      cv::rectangle(img, rect(f.groundTruth), cv::Scalar(255, 255, 255), 2);
-    for (size_t e = 0; e < entries.size(); ++e) {
-      const SequenceResult& s = entries[e].sequences[sequence];
-      if (s.ran && i < s.firstRunBoxes.size() && !s.firstRunBoxes[i].empty())
-        cv::rectangle(img, rect(s.firstRunBoxes[i]), kPalette[e % palette], 1);
-    }
+    const cv::Mat img = overlayImage(seq, i, entries, sequence);
     char name[32];
     std::snprintf(name, sizeof name, "/%06d.jpg", f.index);
     const std::string path = dir + name;
@@ -260,6 +293,44 @@ bool writeOverlayFrames(const std::string& dir, const Sequence& seq,
       *err = path + ": cannot write JPEG: " + ex.what();
       return false;
     }
+  }
+  return true;
+}
+
+bool writeOverlayVideo(const std::string& path, const Sequence& seq,
+                       const std::vector<EntryResult>& entries, size_t sequence, double fps,
+                       std::string* err) {
+  cv::VideoWriter writer;
+  cv::Size size;
+  int written = 0;
+  for (size_t i = 0; i < seq.frames.size(); ++i) {
+    if (seq.frames[i].bgr.empty()) continue;
+    const cv::Mat img = overlayImage(seq, i, entries, sequence);
+    if (!writer.isOpened()) {
+      FILE* probe = std::fopen(path.c_str(), "wb");  // the writer's own error says nothing
+      if (!probe) {
+        *err = path + ": cannot write: " + std::strerror(errno);
+        return false;
+      }
+      std::fclose(probe);
+      if (!writer.open(path, cv::CAP_OPENCV_MJPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
+                       fps > 0.0 ? fps : 30.0, img.size())) {
+        *err = path + ": cannot write Motion JPEG";
+        return false;
+      }
+      size = img.size();
+    }
+    if (img.size() != size) {
+      *err = path + ": the frames change size";
+      return false;
+    }
+    writer.write(img);
+    ++written;
+  }
+  writer.release();
+  if (written == 0) {
+    *err = path + ": no frame to write";
+    return false;
   }
   return true;
 }

@@ -37,10 +37,15 @@ bool writeBobotResult(const std::string& path, const std::string& header,
                       std::string* err);
 
 // Overlay frames: DIR/NNNNNN.jpg, the sequence's colour with the ground truth (white)
-// and each entry's first-run box (the plot's colours) drawn in.
+// and each entry's first-run box (the plot's colours) drawn in, a legend under it (frame
+// number, each entry's colour, "lost" where it had no box).
 struct Sequence;
 bool writeOverlayFrames(const std::string& dir, const Sequence& seq,
                         const std::vector<EntryResult>& entries, size_t sequence, std::string* err);
+// The same frames as one Motion JPEG video (PATH.avi) at fps (0: 30).
+bool writeOverlayVideo(const std::string& path, const Sequence& seq,
+                       const std::vector<EntryResult>& entries, size_t sequence, double fps,
+                       std::string* err);
 
 // Makes `path` and its parents; false with *err on failure.
 bool makeDirs(const std::string& path, std::string* err);

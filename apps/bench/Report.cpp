@@ -174,6 +174,22 @@ double speedRatio(const EntryResult& entry, const EntryResult& reference) {
   return b > 0.0 ? a / b : kNan;
 }
 
+// What dist. leaves out: per tracker, the share of frames it is averaged over.
+std::string distCoverage(const std::vector<EntryResult>& entries, bool markdown) {
+  std::string out = markdown ? "\n*dist.* averages only the frames where both the tracker's and "
+                               "the true box exist; frames covered: "
+                             : "dist. covers only frames where both boxes exist; frames covered: ";
+  bool first = true;
+  for (const EntryResult& e : entries) {
+    if (e.sequencesRan() == 0) continue;
+    appendf(out, "%s%s %s%%", first ? "" : ", ", e.label().c_str(),
+            num(e.average().centerPct, 0).c_str());
+    first = false;
+  }
+  out += "\n";
+  return out;
+}
+
 std::string textReport(const std::vector<EntryResult>& entries) {
   std::string out;
   if (entries.empty() || entries.front().sequences.empty()) return out;
@@ -181,8 +197,11 @@ std::string textReport(const std::vector<EntryResult>& entries) {
       "Overlap and hit rate [%] (the paper's Table 1 layout); cpu = mean ms per frame, "
       "tracking only\n";
   textTable(out, entries, kTable1);
-  out += "\nPASCAL score [%] and mean centre distance [px] (the paper's Table 2 layout)\n";
+  out +=
+      "\nPASCAL score [%] and mean centre distance [px] (the paper's Table 2 layout); dist. "
+      "is over the frames where both boxes exist (lost frames left out: see below)\n";
   textTable(out, entries, kTable2);
+  out += distCoverage(entries, false);
   if (anyCenterMm(entries)) {
     out +=
         "\n3D centre error and its depth part [mm], mean over frames where the target is "
@@ -263,6 +282,7 @@ std::string markdownReport(const std::vector<EntryResult>& entries, PaperReferen
 
   out += "\n";
   markdownTable(out, entries, kTable2);
+  out += distCoverage(entries, true);
   // The 3D centre's error, where the sequences know the target's 3D centre.
   if (anyCenterMm(entries)) {
     out += "\n";

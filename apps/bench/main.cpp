@@ -170,6 +170,12 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
       ++failures;
     }
+    if (!options.videoDir.empty() && (!makeDirs(options.videoDir, &err) ||
+                                      !writeOverlayVideo(options.videoDir + "/" + seq.name + ".avi",
+                                                         seq, results, index, 30.0, &err))) {
+      std::fprintf(stderr, "cuetrack-bench: %s\n", err.c_str());
+      ++failures;
+    }
   }
 
   if (!options.plotDir.empty() && !results.empty() && !results.front().sequences.empty()) {

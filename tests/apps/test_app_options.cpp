@@ -229,3 +229,30 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
     CHECK(err.find(b.says) == 0);
   }
 }
+
+TEST_CASE(
+    "--show, --select, --snapshot and --video are read; combinations that cannot be are "
+    "refused in one line") {
+  AppOptions o;
+  std::string err;
+  REQUIRE(parse({}, &o, &err) == ParseResult::Run);
+  CHECK_FALSE(o.show);
+  CHECK_FALSE(o.select);
+  CHECK(o.snapshotPath == nullptr);
+  CHECK(o.videoPath == nullptr);
+  REQUIRE(parse({"--show", "--select", "--video", "run.avi"}, &o, &err) == ParseResult::Run);
+  CHECK(o.show);
+  CHECK(o.select);
+  CHECK(std::string(o.videoPath) == "run.avi");
+  REQUIRE(parse({"--snapshot", "f.png"}, &o, &err) == ParseResult::Run);
+  CHECK(std::string(o.snapshotPath) == "f.png");
+
+  CHECK(parse({"--select", "--box", "1,2,3,4"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--select and --box: one target at a time");
+  CHECK(parse({"--snapshot", "f.png", "--show"}, &o, &err) == ParseResult::Error);
+  CHECK(err.rfind("--snapshot saves a frame and exits", 0) == 0);
+  CHECK(parse({"--snapshot"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--snapshot needs a value (see --help)");
+  CHECK(parse({"--video"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--video needs a value (see --help)");
+}

@@ -259,6 +259,33 @@ TEST_CASE("--box wins over ground truth; a refused --box ends the run with BoxRe
         1);
 }
 
+TEST_CASE("a poor target from START or --box is warned about in one line, and still tracked") {
+  // TinySource's frames are one flat colour: any box there has no texture and looks like
+  // its surroundings (a plain wall).
+  PipelineOptions o;
+  o.useGroundTruth = false;
+  o.warnPoorTarget = true;
+  static Rig rig(10, true, o);
+  REQUIRE(rig.step() == StepResult::Continue);
+  rig.host.send(startCommand(7, 20, 10, 16, 16));
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.sink.at(1).state == CTP_STATE_TRACKING);
+  CHECK(rig.reporter.countContaining("START 20,10,16,16: poor target: almost no texture") == 1);
+  CHECK(rig.reporter.countContaining("plain wall") == 1);
+
+  o.hasBox = true;
+  o.box = Box{30.f, 5.f, 8.f, 8.f};
+  static Rig boxRig(3, true, o);
+  REQUIRE(boxRig.step() == StepResult::Continue);
+  CHECK(boxRig.reporter.countContaining("--box 30,5,8,8: poor target") == 1);
+
+  // Off (the default, and the tests above): nothing said.
+  o.warnPoorTarget = false;
+  static Rig quiet(3, true, o);
+  REQUIRE(quiet.step() == StepResult::Continue);
+  CHECK(quiet.reporter.countContaining("poor target") == 0);
+}
+
 TEST_CASE("START, RESET and STOP over the serial link, each answered") {
   PipelineOptions o;
   o.useGroundTruth = false;

@@ -110,6 +110,7 @@ TEST_CASE("aggregation over runs: means of run figures, times pooled") {
   CHECK(f.hit == Approx(95));
   CHECK(f.pascal == Approx(80));
   CHECK(f.centerPx == Approx(4));
+  CHECK(f.centerPct == Approx(50));  // run b's 10 frames are all left out of it
   CHECK(f.msMedian == Approx(2.5));  // (2000 + 3000) / 2 us
   CHECK(f.msMean == Approx(4.0));    // 16000 / 4 us
   CHECK(f.allocs == Approx(2.0));
@@ -123,12 +124,15 @@ TEST_CASE("average over sequences is the macro mean, centre over those that have
   s2.overlap = 70;
   s1.centerPx = 6;
   s2.centerPx = std::nan("");
+  s1.centerPct = 100;
+  s2.centerPct = 0;
   s1.msMean = 2;
   s2.msMean = 4;
   const Figures a = averageFigures({s1, s2});
   CHECK(a.frames == 150);
   CHECK(a.overlap == Approx(80));
   CHECK(a.centerPx == Approx(6));
+  CHECK(a.centerPct == Approx(50));  // so the table can say what dist. leaves out
   CHECK(a.msMean == Approx(3));
   CHECK(std::isnan(averageFigures({}).centerPx));
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
 #include <sstream>
 
 #include "Outputs.hpp"
@@ -403,7 +404,11 @@ TEST_CASE("a tracker that cannot run is reported with its reason, in every repor
   const std::string text = textReport({a, b});
   CHECK(text.find("cuetrack 2.1 on square: cannot run: needs depth") != std::string::npos);
   CHECK(text.find("Over.") != std::string::npos);
+  // dist. says what it leaves out: the one tracker that ran had both boxes in every frame.
+  CHECK(text.find("dist. covers only frames where both boxes exist; frames covered: "
+                  "opencv-kcf 100%") != std::string::npos);
   const std::string md = markdownReport({a, b}, PaperReference::Table3);
+  CHECK(md.find("frames covered: opencv-kcf 100%") != std::string::npos);
   CHECK(md.find("- cuetrack 2.1 on square: cannot run: needs depth") != std::string::npos);
   CHECK(md.find("paper 2.1 | 73.47 | 96.77") != std::string::npos);
 
@@ -449,6 +454,22 @@ TEST_CASE("output files: BoBoT result format, per-frame CSV, overlap plot") {
 
   CHECK_FALSE(writeOverlapPlot("/nonexistent-dir/p.png", {e}, 0, &err));
   CHECK(err.find("/nonexistent-dir/p.png") == 0);
+
+  // The overlay video: every frame, the frame's width, a legend under it (frame number +
+  // one row per entry); the entry's box drawn in its colour at its first-run box.
+  REQUIRE(writeOverlayVideo("bench_runner_out/square.avi", seq, {e}, 0, 30.0, &err));
+  cv::VideoCapture video("bench_runner_out/square.avi");
+  REQUIRE(video.isOpened());
+  cv::Mat frame;
+  int n = 0;
+  while (video.read(frame)) {
+    CHECK(frame.cols == 160);
+    CHECK(frame.rows > 120 + 2 * 16);
+    ++n;
+  }
+  CHECK(n == static_cast<int>(seq.frames.size()));
+  CHECK_FALSE(writeOverlayVideo("/nonexistent-dir/v.avi", seq, {e}, 0, 30.0, &err));
+  CHECK(err.find("/nonexistent-dir/v.avi: cannot write") == 0);
 }
 
 TEST_CASE("OpenCV KCF follows a clearly visible moving target on the same frames") {

@@ -1,12 +1,18 @@
 #include "App.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
+#include <cstring>
 
 #include "Options.hpp"
 #include "PacedSource.hpp"
 #include "Pipeline.hpp"
+#include "PrefetchedSource.hpp"
+#include "RunSummary.hpp"
 #include "SerialLink.hpp"
 #include "Sources.hpp"
+#include "View.hpp"
 #include "WaitingSource.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
@@ -18,6 +24,27 @@
 #include "cuetrack/platform/mavlink/MavlinkLink.hpp"
 
 namespace cuetrack::app {
+namespace {
+
+// Where the target comes from, for the banner.
+void describeTarget(const AppOptions& opt, const char* groundTruthName, char* out, size_t n) {
+  const bool live = opt.source && std::strncmp(opt.source, "kinect", 6) == 0;
+  const char* orStart = opt.serialPath || opt.mavlinkUdp ? ", or a START on the link" : "";
+  if (opt.select) {
+    std::snprintf(out, n, "the box dragged with --select");
+  } else if (opt.hasBox) {
+    std::snprintf(out, n, "--box %g,%g,%g,%g", opt.box.x, opt.box.y, opt.box.w, opt.box.h);
+  } else if (opt.useGroundTruth && !live) {
+    std::snprintf(out, n, "ground truth (%.400s) where the target first shows%s", groundTruthName,
+                  orStart);
+  } else if (opt.serialPath || opt.mavlinkUdp) {
+    std::snprintf(out, n, "waiting for a START on the link (or give --box / --select)");
+  } else {
+    std::snprintf(out, n, "none: nothing will be tracked (give --box X,Y,W,H or --select)");
+  }
+}
+
+}  // namespace
 
 int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   platform::StderrReporter reporter("cuetrack");
@@ -39,6 +66,14 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     std::snprintf(err, sizeof err, "--baud %d: unsupported (9600..921600, see --help)", opt.baud);
     reporter.report(err);
     return kExitUsage;
+  }
+  if (opt.show || opt.select) {
+    char why[256];
+    if (!displayAvailable(why, sizeof why)) {
+      std::snprintf(err, sizeof err, "%s: %s", opt.show ? "--show" : "--select", why);
+      reporter.report(err);
+      return kExitUsage;
+    }
   }
   if (opt.waitCamera && !kinectSupported()) {  // it would wait for ever
     reporter.report("--wait-camera: this build has no Kinect driver (libfreenect missing)");
@@ -74,6 +109,51 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       return kExitSource;
     }
   }
+  static FrameSlot slot;  // ~1.5 MiB
+  static LiveView view;
+  if (opt.show && !view.start(err, sizeof err)) {
+    reporter.report(err);
+    return kExitUsage;
+  }
+  if (opt.select || opt.snapshotPath) {
+    // The first frame, read into the pipeline's slot: the pipeline then starts on it.
+    const ReadStatus rs = source->next(slot);
+    if (rs != ReadStatus::Ok) {
+      if (rs == ReadStatus::Error) {
+        reporter.report(source->error());
+      } else {
+        std::snprintf(err, sizeof err, "%s: no frame to %s (the source is empty)",
+                      opt.source ? opt.source : source->name(),
+                      opt.select ? "select on" : "snapshot");
+        reporter.report(err);
+      }
+      return kExitSource;
+    }
+    if (opt.snapshotPath) {
+      if (!writeSnapshot(slot.frame(), opt.snapshotPath, err, sizeof err)) {
+        reporter.report(err);
+        return kExitOutput;
+      }
+      std::snprintf(err, sizeof err,
+                    "wrote %s: frame %d, %dx%d px, grid every %d px; read the target's box off it "
+                    "and run with --box X,Y,W,H",
+                    opt.snapshotPath, slot.index, slot.rgb.width(), slot.rgb.height(),
+                    kSnapshotGridPx);
+      reporter.report(err);
+      return kExitOk;
+    }
+    if (!(opt.show ? view.pick(slot.frame(), &opt.box, err, sizeof err)
+                   : pickBox(slot.frame(), &opt.box, err, sizeof err))) {
+      reporter.report(err);
+      return kExitUsage;
+    }
+    opt.hasBox = true;
+    std::snprintf(err, sizeof err, "picked --box %g,%g,%g,%g (give it to later runs)", opt.box.x,
+                  opt.box.y, opt.box.w, opt.box.h);
+    reporter.report(err);
+    static PrefetchedSource prefetched(*source);
+    source = &prefetched;
+  }
   static PacedSource paced(*source, clock, sleeper, &platform::stopRequested);
   if (opt.realtime) source = &paced;  // a live Kinect is paced by its own clock anyway
 
@@ -94,7 +174,12 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     return kExitOutput;
   }
 
-  static FrameSlot slot;  // ~1.5 MiB
+  static VideoOut video;
+  bool videoOk = opt.videoPath != nullptr;
+  if (opt.videoPath && !video.open(opt.videoPath, source->nominalFps(), err, sizeof err)) {
+    reporter.report(err);
+    return kExitOutput;
+  }
   PipelineOptions po;
   po.maxFrames = opt.frames;
   po.hasBox = opt.hasBox;
@@ -106,9 +191,13 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   describeGroundTruth(opt.source, groundTruthName, sizeof groundTruthName);
   po.sourceName = opt.source ? opt.source : source->name();
   po.groundTruthName = groundTruthName;
+  po.warnPoorTarget = true;
   Pipeline pipeline(*source, slot, tracker, clock, reporter, po);
   if (opt.outPath) pipeline.addSink(&fileSink);
-  if (opt.forceStdout || (!opt.outPath && !opt.serialPath && !opt.mavlinkUdp)) {
+  // One line per frame floods a terminal: there, only with --stdout (pipes get them).
+  const bool defaultOutput = !opt.outPath && !opt.serialPath && !opt.mavlinkUdp;
+  const bool stdoutIsTerminal = isatty(STDOUT_FILENO) == 1;
+  if (opt.forceStdout || (defaultOutput && !stdoutIsTerminal)) {
     stdoutSink.attachStdout(platform::TextFormat::Line);
     pipeline.addSink(&stdoutSink);
   }
@@ -131,9 +220,74 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   }
   if (link) pipeline.attachLink(link);
 
+  if (!opt.quiet) {
+    char sourceWhy[256], target[512], banner[1200];
+    describeSourceChoice(opt.source, sourceWhy, sizeof sourceWhy);
+    describeTarget(opt, groundTruthName, target, sizeof target);
+    std::snprintf(
+        banner, sizeof banner, "source %s | target: %s | config %s, seed %llu | output: %s%s",
+        sourceWhy, target, opt.preset, static_cast<unsigned long long>(opt.seed),
+        opt.serialPath                           ? opt.serialPath
+        : opt.outPath                            ? opt.outPath
+        : opt.mavlinkUdp                         ? opt.mavlinkUdp
+        : (opt.forceStdout || !stdoutIsTerminal) ? "stdout, one line per frame"
+                                                 : "the summary below (--stdout: a line per frame)",
+        opt.show ? " | window: --show" : "");
+    reporter.report(banner);
+  }
+
+  RunSummary summary;
+  bool windowQuit = false;
+  const uint64_t runStartUs = clock.nowUs();
   StepResult r = StepResult::Continue;
-  while (r == StepResult::Continue && !platform::stopRequested()) r = pipeline.step();
+  while (r == StepResult::Continue && !platform::stopRequested()) {
+    const uint32_t before = pipeline.frames();
+    r = pipeline.step();
+    if (pipeline.frames() == before) continue;  // no frame this step
+    const ctp_track_t& t = pipeline.lastTrack();
+    summary.add(t, slot.hasGroundTruth ? &slot.groundTruth : nullptr);
+    if (!opt.show && !videoOk) continue;
+    ViewTrack vt;
+    vt.frameIndex = static_cast<uint32_t>(slot.index);
+    vt.state = t.state;
+    vt.box = Box{static_cast<float>(t.box_px[0]), static_cast<float>(t.box_px[1]),
+                 static_cast<float>(t.box_px[2]), static_cast<float>(t.box_px[3])};
+    vt.confidence = static_cast<float>(t.confidence) / 65535.f;
+    if (videoOk && !video.write(slot.frame(), vt, err, sizeof err)) {
+      // Like any output: said once, tracking goes on, the exit code tells.
+      reporter.report(err);
+      videoOk = false;
+    }
+    if (!opt.show) continue;
+    view.push(slot.frame(), vt);
+    view.waitWhilePaused(&platform::stopRequested);
+    Box picked{};
+    if (view.takeReselect(&picked)) {  // on the next frame, as a serial START would be
+      platform::StartRequest start;
+      start.kind = platform::StartRequest::Kind::BoxPx;
+      start.box = picked;
+      pipeline.requestStart(start);
+      std::snprintf(err, sizeof err, "re-selected --box %g,%g,%g,%g", picked.x, picked.y, picked.w,
+                    picked.h);
+      reporter.report(err);
+    }
+    if (view.quitRequested()) {
+      windowQuit = true;
+      break;
+    }
+  }
+  const uint64_t runUs = clock.nowUs() - runStartUs;
   pipeline.finish();
+  view.close();
+  if (opt.videoPath && videoOk) {
+    if (video.close(err, sizeof err)) {
+      std::snprintf(err, sizeof err, "wrote %s: %u frames", opt.videoPath,
+                    static_cast<unsigned>(video.frames()));
+    } else {
+      videoOk = false;
+    }
+    reporter.report(err);
+  }
   bool closeFailed = false;
   if (opt.outPath && !fileSink.close()) {  // the rows may sit in the page cache until here
     reporter.report(fileSink.error());
@@ -146,6 +300,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     int n = std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
                           static_cast<unsigned>(pipeline.frames()),
                           platform::stopRequested()      ? "signal"
+                          : windowQuit                   ? "window closed"
                           : r == StepResult::Stopped     ? "STOP command"
                           : r == StepResult::Done        ? "end of source or --frames"
                           : r == StepResult::OutputsGone ? "every output failed"
@@ -161,6 +316,18 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
                     "; serial sent %u tx-dropped %u rx-errors %u", static_cast<unsigned>(s.sent),
                     static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors));
     }
+    reporter.report(err);
+    summary.format(runUs, err, sizeof err);
+    if (opt.show) {
+      const size_t used = std::strlen(err);
+      std::snprintf(err + used, sizeof err - used, ", window dropped %llu of them",
+                    static_cast<unsigned long long>(view.droppedFrames()));
+    }
+    reporter.report(err);
+    std::snprintf(err, sizeof err,
+                  "next: %s --show --realtime (watch it) | %s --select (pick your own target) | "
+                  "docs/first-hour.md",
+                  argv[0], argv[0]);
     reporter.report(err);
   } else {
     // Even --quiet: frames and messages are not lost without a word.
@@ -182,7 +349,8 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     case StepResult::BoxRejected:
       return kExitBoxRejected;
     default:
-      return pipeline.outputFailed() || closeFailed ? kExitOutput : kExitOk;
+      return pipeline.outputFailed() || closeFailed || (opt.videoPath && !videoOk) ? kExitOutput
+                                                                                   : kExitOk;
   }
 }
 

@@ -67,7 +67,18 @@ const char* usageText() {
          "target (default: the ground truth where the target first shows, else wait for START):\n"
          "  --box X,Y,W,H      target box in the first frame [px]\n"
          "  --no-gt            ignore ground truth: wait for --box or a serial START command\n"
-         "outputs (stdout gets one line per frame when neither --serial nor --out is given):\n"
+         "  --select           show the first frame and drag a box around the target; prints\n"
+         "                     it as --box X,Y,W,H for later runs (needs a display)\n"
+         "  --snapshot FILE.png\n"
+         "                     save the first frame with a pixel grid (every 40 px) and exit,\n"
+         "                     to read a --box off it on a board without a display\n"
+         "see it (host builds with OpenCV, needs a display):\n"
+         "  --show             live window: box, state, confidence, fps, depth beside it;\n"
+         "                     space pauses, r re-selects the target, q or Esc quits\n"
+         "  --video FILE.avi   write every frame with its box, state, confidence and frame\n"
+         "                     number drawn (Motion JPEG; no display needed)\n"
+         "outputs (stdout gets one line per frame when neither --serial nor --out is given,\n"
+         "and stdout is not a terminal: there, only with --stdout):\n"
          "  --serial DEV       stream binary track messages, accept commands (8N1 raw)\n"
          "  --baud N           9600 19200 38400 57600 115200 (default) 230400 460800 500000\n"
          "                     576000 921600\n"
@@ -106,7 +117,8 @@ const char* usageText() {
          "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM/SIGHUP, STOP command),\n"
          "  1 source failed (cannot open, a read failed, a damaged frame, or a frame's size\n"
          "  differs from the frame the track began on), 2 bad command line (an option given\n"
-         "  twice too), 3 output failed (cannot open, or a write to --out/stdout failed;\n"
+         "  twice too; --show or --select without a display, a --select cancelled), 3 output\n"
+         "  failed (cannot open, or a write to --out/stdout/--video/--snapshot failed;\n"
          "  tracking went on), 4 the --box, or the source's ground-truth box, refused by the\n"
          "  tracker\n";
 }
@@ -138,6 +150,16 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       out->realtime = true;
     } else if (std::strcmp(a, "--wait-camera") == 0) {
       out->waitCamera = true;
+    } else if (std::strcmp(a, "--show") == 0) {
+      out->show = true;
+    } else if (std::strcmp(a, "--select") == 0) {
+      out->select = true;
+    } else if (std::strcmp(a, "--video") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      out->videoPath = v;
+    } else if (std::strcmp(a, "--snapshot") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      out->snapshotPath = v;
     } else if (std::strcmp(a, "--skip-bad-frames") == 0) {
       out->skipBadFrames = true;
     } else if (std::strcmp(a, "--source") == 0) {
@@ -260,6 +282,15 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       (out->source == nullptr ||
        (std::strcmp(out->source, "kinect") != 0 && std::strncmp(out->source, "kinect:", 7) != 0))) {
     std::snprintf(err, errLen, "--wait-camera needs --source kinect or kinect:colour");
+    return ParseResult::Error;
+  }
+  if (out->select && out->hasBox) {
+    std::snprintf(err, errLen, "--select and --box: one target at a time");
+    return ParseResult::Error;
+  }
+  if (out->snapshotPath && (out->show || out->select || out->videoPath)) {
+    std::snprintf(err, errLen,
+                  "--snapshot saves a frame and exits: not with --show, --select or --video");
     return ParseResult::Error;
   }
   // A setting that would do nothing is refused rather than ignored.

@@ -43,6 +43,10 @@ struct AppOptions {
   const char* mavlinkUdp = nullptr;         // --mavlink-udp HOST:PORT instead of --serial
   bool landingPosition = true;              // --mavlink-landing frd (else angles)
   const char* mavlinkOnlyOption = nullptr;  // the first --mavlink-* option given
+  bool show = false;                        // --show: live window (View.hpp, host only)
+  bool select = false;                      // --select: drag the target box on frame 1
+  const char* snapshotPath = nullptr;       // --snapshot FILE.png: frame 1 + grid, then exit
+  const char* videoPath = nullptr;          // --video FILE.avi: every frame with its track
 };
 
 enum class ParseResult : uint8_t { Run, Help, Error };

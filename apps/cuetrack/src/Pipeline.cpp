@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "StartBox.hpp"
+#include "TargetCheck.hpp"
 #include "cuetrack/core/FastMath.hpp"
 #include "cuetrack/platform/TrackText.hpp"
 
@@ -86,6 +87,7 @@ bool Pipeline::startFromCommand(const Frame& frame, Box* initBox) {
   const Box box = startBoxPx(_start, frame);
   if (_tracker.init(frame, box, &why) == 0) {
     *initBox = box;
+    warnIfPoorTarget(frame, box, "START");
     if (_link) _link->answerStart(_start.token, platform::StartOutcome::Started);
     return true;
   }
@@ -115,6 +117,7 @@ bool Pipeline::startFromOptions(const Frame& frame, Box* initBox, bool* rejected
   const char* why = "";
   if (_tracker.init(frame, box, &why) == 0) {
     *initBox = box;
+    if (_options.hasBox) warnIfPoorTarget(frame, box, "--box");
     return true;
   }
   // Either ends the run: without it nothing would be tracked, ever.
@@ -130,6 +133,20 @@ bool Pipeline::startFromOptions(const Frame& frame, Box* initBox, bool* rejected
   _reporter.report(line);
   *rejected = true;
   return false;
+}
+
+void Pipeline::warnIfPoorTarget(const Frame& frame, const Box& box, const char* origin) {
+  if (!_options.warnPoorTarget) return;
+  const TargetCheck check = checkTarget(frame, box);
+  if (check.issues == 0) return;
+  char issues[320];
+  describeTargetIssues(check, issues, sizeof issues);
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "%s %g,%g,%g,%g: poor target: %s (the track may follow nothing; --select or "
+                "--snapshot FILE.png to pick another)",
+                origin, box.x, box.y, box.w, box.h, issues);
+  _reporter.report(line);
 }
 
 bool Pipeline::sizeChanged(const Frame& frame) {
@@ -193,6 +210,7 @@ StepResult Pipeline::step() {
       result, frame.timeUs, static_cast<uint32_t>(procUs > 0xFFFFFFFFu ? 0xFFFFFFFFu : procUs),
       _state);
   _state = msg.state;
+  _lastTrack = msg;
   ++_frames;
   emit(msg, frame);
   statusLine();

@@ -25,6 +25,9 @@ struct PipelineOptions {
   // where its ground truth comes from, e.g. "rec/groundtruth.txt" (nullptr: "ground truth").
   const char* sourceName = nullptr;
   const char* groundTruthName = nullptr;
+  // Warn in one line when a box the user gave (--box, a START) is a poor target
+  // (TargetCheck.hpp); ground-truth boxes are taken as they are.
+  bool warnPoorTarget = false;
 };
 
 enum class StepResult : uint8_t {
@@ -65,6 +68,8 @@ class Pipeline final : public platform::LinkControl {
 
   uint32_t frames() const { return _frames; }
   uint8_t state() const { return _state; }
+  // The last frame's track as sent out (seq 0), for the window and the run summary.
+  const ctp_track_t& lastTrack() const { return _lastTrack; }
   bool outputFailed() const { return _outputFailed; }
 
  private:
@@ -80,6 +85,7 @@ class Pipeline final : public platform::LinkControl {
   bool sizeChanged(const Frame& frame);
   void emit(const ctp_track_t& msg, const Frame& frame);
   void statusLine();
+  void warnIfPoorTarget(const Frame& frame, const Box& box, const char* origin);
 
   FrameSource& _source;
   FrameSlot& _slot;
@@ -103,6 +109,7 @@ class Pipeline final : public platform::LinkControl {
   bool _stopRequested{false};
   uint8_t _state{CTP_STATE_IDLE};
   uint32_t _frames{0};
+  ctp_track_t _lastTrack{};
 
   uint64_t _statusLastUs{0};
   uint32_t _statusLastFrames{0};

@@ -15,6 +15,8 @@
 namespace cuetrack::app {
 namespace {
 
+char gDefaultWhy[200] = "";  // why openSource(nullptr) chose what it chose
+
 FrameSource* openSynth(const char* scene, uint64_t seed, int frames, char* err, size_t errLen) {
   SceneSpec spec;
   if (!makeScene(scene, &spec)) {
@@ -59,7 +61,21 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   if (spec == nullptr) {
 #if defined(CUETRACK_HAVE_KINECT)
     char why[160] = "";
-    if (countKinects(why, sizeof why) > 0) return openKinect(KinectStreams::Both, err, errLen);
+    const int kinects = countKinects(why, sizeof why);
+    if (kinects > 0) {
+      std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
+                    "kinect, the Kinect plugged in (--source to choose another)");
+      return openKinect(KinectStreams::Both, err, errLen);
+    }
+    std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
+                  "synth:%s, a generated scene (%s%s; --source kinect|synth:SCENE|PATH to choose)",
+                  kDefaultScene, kinects < 0 ? "Kinect unusable: " : "no Kinect found",
+                  kinects < 0 ? why : "");
+#else
+    std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
+                  "synth:%s, a generated scene (this build has no Kinect driver; --source "
+                  "synth:SCENE|PATH to choose)",
+                  kDefaultScene);
 #endif
     return openSynth(kDefaultScene, seed, frames, err, errLen);
   }
@@ -88,6 +104,14 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   return recorded.get();
 }
 
+void describeSourceChoice(const char* spec, char* out, size_t outLen) {
+  if (spec == nullptr && gDefaultWhy[0] != '\0') {
+    std::snprintf(out, outLen, "%s", gDefaultWhy);
+  } else {
+    std::snprintf(out, outLen, "%s", spec ? spec : "default");
+  }
+}
+
 bool kinectSupported() {
 #if defined(CUETRACK_HAVE_KINECT)
   return true;
@@ -99,7 +123,11 @@ bool kinectSupported() {
 void describeGroundTruth(const char* spec, char* out, size_t outLen) {
   if (!spec || std::strncmp(spec, "kinect", 6) == 0 || std::strncmp(spec, "synth", 5) == 0 ||
       std::strncmp(spec, "pan:", 4) == 0) {
-    std::snprintf(out, outLen, "%s ground truth", spec ? spec : kDefaultScene);
+    if (spec) {
+      std::snprintf(out, outLen, "%s ground truth", spec);
+    } else {
+      std::snprintf(out, outLen, "synth:%s ground truth", kDefaultScene);
+    }
     return;
   }
   const size_t n = std::strlen(spec);

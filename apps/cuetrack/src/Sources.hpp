@@ -17,6 +17,10 @@ namespace cuetrack::app {
 FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen,
                         bool skipBadFrames = false);
 
+// After openSource(nullptr, ...): which source the default chose and why, one phrase, e.g.
+// "synth:moving, a generated scene (no Kinect found; --source to choose)". Else spec.
+void describeSourceChoice(const char* spec, char* out, size_t outLen);
+
 // This build has the Kinect driver (libfreenect): a Kinect can be opened, now or later.
 bool kinectSupported();
 

@@ -69,6 +69,11 @@ ListenParse parseListenOptions(int argc, char** argv, ListenOptions* o, char* er
         std::snprintf(err, errLen, "--idle-timeout %s: expected seconds >= 1", argv[i]);
         return ListenParse::Error;
       }
+    } else if (std::strcmp(a, "--wait-port") == 0 && hasValue) {
+      if (!parseInt(argv[++i], 0, 86400, &o->waitPortS)) {
+        std::snprintf(err, errLen, "--wait-port %s: expected seconds >= 0", argv[i]);
+        return ListenParse::Error;
+      }
     } else if (a[0] == '-' && a[1] != '\0') {
       std::snprintf(err, errLen, "unknown option or missing value: '%s' (see --help)", a);
       return ListenParse::Error;

@@ -16,6 +16,7 @@ struct ListenOptions {
   long baud = 115200;
   long maxTracks = -1;  // --tracks N (>= 1), -1: no limit
   long idleS = -1;      // --idle-timeout S, -1: none
+  long waitPortS = 5;   // --wait-port S: a PORT not there yet is waited for this long
   const char* sends[kMaxSends] = {};
   ctp_command_t commands[kMaxSends] = {};  // the --send texts, parsed, ids 1..N
   int numSends = 0;

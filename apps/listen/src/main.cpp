@@ -25,6 +25,7 @@ using namespace cuetrack;
 const char* kUsage =
     "usage: cuetrack-listen PORT [--baud N] [--csv FILE] [--send COMMAND]... [--tracks N]\n"
     "                       [--idle-timeout SECONDS] [--reconnect] [--state FILE]\n"
+    "                       [--wait-port SECONDS]\n"
     "Decodes cuetrack's serial stream (docs/serial-protocol.md): one line per track on\n"
     "stdout, or with --csv a CSV file (header + one row per track; '-' = stdout). Other\n"
     "messages (ack, error, heartbeat) go to stdout, or to stderr with --csv. The port is\n"
@@ -36,6 +37,9 @@ const char* kUsage =
     "  --idle-timeout S     exit with code 4 when nothing arrives for S seconds\n"
     "  --reconnect          when the port goes away (USB unplugged), wait for it to come\n"
     "                       back instead of exiting 1; the seq gap across it is reported\n"
+    "  --wait-port S        PORT not there yet (a USB adapter being plugged in, a socat\n"
+    "                       pty starting) in a folder that exists: wait up to S seconds\n"
+    "                       for it (default 5, 0 = fail at once)\n"
     "  --state FILE         keep the last seq seen in FILE (written every second and at\n"
     "                       exit); the next run reports the messages lost in between\n"
     "The last line gives the totals: messages by type, rejected frames, the first and\n"
@@ -52,6 +56,33 @@ constexpr int kExitOutput = 3;
 constexpr int kExitIdle = 4;
 constexpr uint64_t kReopenPeriodUs = 500000;
 constexpr uint64_t kStatePeriodUs = 1000000;
+
+// A port path that does not exist yet, in a folder that does (a pty socat is about to
+// link, a USB adapter being plugged in): wait up to waitS for it. True when it waited.
+bool waitForPort(const char* path, long waitS, platform::Reporter& reporter) {
+  if (waitS <= 0 || access(path, F_OK) == 0) return false;
+  char dir[512];
+  std::snprintf(dir, sizeof dir, "%s", path);
+  char* slash = std::strrchr(dir, '/');
+  if (slash == dir) {
+    dir[1] = '\0';
+  } else if (slash) {
+    *slash = '\0';
+  } else {
+    std::snprintf(dir, sizeof dir, ".");
+  }
+  if (access(dir, F_OK) != 0) return false;  // a typo in the folder: fail at once
+  char line[600];
+  std::snprintf(line, sizeof line, "%s: not there yet, waiting up to %ld s for it", path, waitS);
+  reporter.report(line);
+  platform::MonotonicClock clock;
+  platform::MonotonicSleeper sleeper;
+  const uint64_t endUs = clock.nowUs() + static_cast<uint64_t>(waitS) * 1000000u;
+  while (access(path, F_OK) != 0 && clock.nowUs() < endUs && !platform::stopRequested()) {
+    sleeper.sleepUs(50000);  // polling a path: inotify would not see a symlink's target
+  }
+  return true;
+}
 
 // --state FILE: "last_seq N". False when there is no such file (a first run).
 bool readState(const char* path, uint32_t* lastSeq, char* err, size_t errLen) {
@@ -107,8 +138,15 @@ int main(int argc, char** argv) {
 
   platform::installStopSignals();
   static platform::SerialPort port;
+  const bool waited = waitForPort(portPath, opt.waitPortS, problems);
   if (!port.open(portPath, static_cast<int>(baud))) {
-    problems.report(port.error());
+    if (waited) {
+      std::snprintf(err, sizeof err, "%s (waited %ld s for it; --wait-port SECONDS)", port.error(),
+                    opt.waitPortS);
+      problems.report(err);
+    } else {
+      problems.report(port.error());
+    }
     return kExitPort;
   }
   std::snprintf(err, sizeof err, "%s: listening at %ld baud", portPath, baud);
