@@ -67,6 +67,13 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report(err);
     return kExitUsage;
   }
+  if ((opt.snapshotPath || opt.videoPath) && !viewBuilt()) {  // said before any frame is read
+    char why[256];
+    displayAvailable(why, sizeof why);  // the stub's "not built with OpenCV" line
+    std::snprintf(err, sizeof err, "%s: %s", opt.snapshotPath ? "--snapshot" : "--video", why);
+    reporter.report(err);
+    return kExitUsage;
+  }
   if (opt.show || opt.select) {
     char why[256];
     if (!displayAvailable(why, sizeof why)) {

@@ -12,6 +12,9 @@
 
 namespace cuetrack::app {
 
+// This build has OpenCV's highgui/videoio (--snapshot, --video, --show, --select).
+bool viewBuilt();
+
 // This build can open windows (OpenCV highgui) and $DISPLAY names a display; else false
 // and one line in err naming what is missing.
 bool displayAvailable(char* err, size_t errLen);

@@ -16,6 +16,9 @@ bool fail(char* err, size_t errLen) {
 
 struct LiveView::Impl {};
 
+bool viewBuilt() {
+  return false;
+}
 bool displayAvailable(char* err, size_t errLen) {
   return fail(err, errLen);
 }
