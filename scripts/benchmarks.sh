@@ -228,7 +228,7 @@ page="$OUT/benchmarks.md"
   echo
   echo "Median update time on one x86 core, 150 frames of the synthetic scene \`moving\` (640x480"
   echo "RGB-D), with the stages (µs). \`sizeof(Tracker)\` = $size_line B for every preset, allocated"
-  echo "once; no heap use while tracking (proved by \`test_core_nomalloc\` and the bench's allocs"
+  echo "once; no heap use while tracking (counted by \`test_core_tracker\` and the bench's allocs"
   echo "column). Command: \`cuetrack-trackspeed --preset P\`."
   echo
   echo "| preset | median µs / frame | stages (µs) |"
