@@ -15,7 +15,7 @@
 namespace cuetrack::app {
 namespace {
 
-char gDefaultWhy[200] = "";  // why openSource(nullptr) chose what it chose
+char gDefaultWhy[384] = "";  // why openSource(nullptr) chose what it chose
 
 FrameSource* openSynth(const char* scene, uint64_t seed, int frames, char* err, size_t errLen) {
   SceneSpec spec;
