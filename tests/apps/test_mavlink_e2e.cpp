@@ -313,7 +313,9 @@ TEST_CASE("a MAVLink peer that stops reading does not block the tracker; drops a
                         csv.c_str(),      "--frames",   "2000",         nullptr};
   REQUIRE(app.start(argv, nullptr, appErr.c_str()));
   int exitStatus = -1;
-  REQUIRE(app.wait(kAppTimeoutMs, &exitStatus));
+  // 2000 tracked frames (enough to fill the pty) take over two minutes under ASan with
+  // another test beside it: the wait allows four times the others' (ctest's TIMEOUT is 600 s).
+  REQUIRE(app.wait(4 * kAppTimeoutMs, &exitStatus));
   const std::string err = readText(appErr);
   INFO(err);
   CHECK(exitStatus == 0);
