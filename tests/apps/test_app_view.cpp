@@ -28,24 +28,6 @@ namespace {
 
 constexpr int kAppTimeoutMs = 120000;  // generous: 2 cores shared by many builds
 
-std::string slurp(const std::string& path) {
-  static char buf[1 << 20];
-  if (!readFile(path.c_str(), buf, sizeof buf)) return "";
-  return buf;
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  size_t start = 0;
-  while (start < text.size()) {
-    size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    out.push_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-  return out;
-}
-
 bool contains(const std::string& s, const char* part) {
   return s.find(part) != std::string::npos;
 }

@@ -15,11 +15,6 @@ using namespace cuetrack::test;
 namespace {
 constexpr int kTimeoutMs = 120000;  // generous: 2 cores shared by many builds
 
-std::string slurp(const std::string& path) {
-  static char buf[1 << 16];
-  if (!readFile(path.c_str(), buf, sizeof buf)) return "";
-  return buf;
-}
 }  // namespace
 
 TEST_CASE("cuetrack-listen waits for a port that appears after it started") {

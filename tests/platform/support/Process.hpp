@@ -6,6 +6,8 @@
 #include <sys/types.h>
 
 #include <cstddef>
+#include <string>
+#include <vector>
 
 namespace cuetrack::test {
 
@@ -57,6 +59,10 @@ class PtyPair {
 bool fileExists(const char* path);
 // Reads a whole small text file into buf; false when it cannot be read.
 bool readFile(const char* path, char* buf, size_t cap);
+// A whole text file (up to 1 MiB) as a string; "" when it cannot be read.
+std::string slurp(const std::string& path);
+// The lines of `text`, without their newlines.
+std::vector<std::string> lines(const std::string& text);
 
 template <typename F>
 bool waitFor(F done, int timeoutMs) {
