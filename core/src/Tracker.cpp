@@ -1,5 +1,6 @@
 #include "cuetrack/core/Tracker.hpp"
 
+#include "cuetrack/core/PeakContrast.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
@@ -269,6 +270,14 @@ Tracker::Estimate Tracker::estimate() {
   }
   e.concentration = wsum > 0.f ? concentration / wsum : 0.f;
   e.confidence = 0.5f * (c + 1.f);
+  e.contrast = PeakContrast::kNoRing;
+  if (_config.lostDetection) {
+    Box ring[PeakContrast::kRing];
+    float ringScores[PeakContrast::kRing];
+    const int k = PeakContrast::ring(e.box, _imageW, _imageH, ring);
+    for (int i = 0; i < k; ++i) ringScores[i] = _strong.evaluate(_channels.tables(), ring[i]);
+    e.contrast = PeakContrast::of(c, ringScores, k);
+  }
   return e;
 }
 
@@ -280,6 +289,9 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     // or on the background (either can look enough like the target to keep the
     // confidence above the lost threshold). Counts as a miss, and is not learnt.
     occluded = _is3d && !wasLost && !_lost.onProbation() && _depthGuard.jumped(e.particle.p[2]);
+    // An estimate that does not stand out from the windows beside it (a plain wall, a
+    // cloud drifted onto background) is a miss too, and not learnt.
+    if (PeakContrast::flat(e.contrast)) occluded = true;
     _state = _lost.step(_state, occluded ? 0.f : e.confidence);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
   }

@@ -216,6 +216,25 @@ TEST_CASE("a box on the wall is warned about in one line; the true target is not
       run({CUETRACK_APP_BIN, "--source", "synth:moving", "--frames", "3", "--box", "291,266,30,52"},
           out, err) == 0);
   CHECK_FALSE(contains(slurp(err), "poor target"));
+
+  // A box on the untextured scene's plain wall: flagged, and reported lost within the lost
+  // detector's 4 misses (PeakContrast: it does not stand out from the windows beside it).
+  REQUIRE(run({CUETRACK_APP_BIN, "--source", "synth:untextured", "--frames", "30", "--box",
+               "100,300,40,40"},
+              out, err) == 0);
+  CHECK(contains(slurp(err), "--box 100,300,40,40: poor target"));
+  const std::vector<std::string> track = lines(slurp(out));
+  REQUIRE(track.size() == 30);
+  int firstLost = -1, trackingAfter = 0;
+  for (size_t i = 0; i < track.size(); ++i) {
+    const bool lost = contains(track[i], " lost ");
+    if (lost && firstLost < 0) firstLost = static_cast<int>(i);
+    if (firstLost >= 0 && contains(track[i], " tracking ")) ++trackingAfter;
+  }
+  INFO("first lost line " << firstLost << ", tracking lines after it " << trackingAfter);
+  CHECK(firstLost >= 1);
+  CHECK(firstLost <= 5);
+  CHECK(trackingAfter <= 2);
 }
 
 TEST_CASE("--snapshot writes the first frame with a 40 px grid, at the frame's size") {

@@ -1,5 +1,5 @@
 // The beyond-the-paper components the tracker wires, each on its own: the depth guard,
-// fast motion's jumps, the lost search, and the small helpers (the depth median that places a new
+// fast motion's jumps, the lost search, the peak contrast, and the small helpers (the depth median that places a new
 // 3D track, the scan order, the small target's padding).
 #include <catch2/catch.hpp>
 
@@ -10,6 +10,7 @@
 #include "cuetrack/core/DepthMedian.hpp"
 #include "cuetrack/core/FastMotion.hpp"
 #include "cuetrack/core/LostSearch.hpp"
+#include "cuetrack/core/PeakContrast.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
 #include "cuetrack/core/WindowPadding.hpp"
 
@@ -219,4 +220,39 @@ TEST_CASE("WindowPadding: a small target's window is padded about its centre, an
   CHECK(back.x == Approx(104.f));
   CHECK(back.w == Approx(6.f));
   CHECK(back.h == Approx(8.f));
+}
+
+TEST_CASE("PeakContrast: the ring is the four windows one side away inside the image",
+          "[core][components]") {
+  Box ring[PeakContrast::kRing];
+  // In the middle: all four, each the estimate's size, touching it.
+  REQUIRE(PeakContrast::ring(Box{100, 100, 40, 20}, 640, 480, ring) == 4);
+  CHECK(ring[0].x == 60.f);
+  CHECK(ring[1].x == 140.f);
+  CHECK(ring[2].y == 80.f);
+  CHECK(ring[3].y == 120.f);
+  for (const Box& b : ring) {
+    CHECK(b.w == 40.f);
+    CHECK(b.h == 20.f);
+  }
+  // In the top-left corner: only right and below.
+  REQUIRE(PeakContrast::ring(Box{0, 0, 40, 20}, 640, 480, ring) == 2);
+  CHECK(ring[0].x == 40.f);
+  CHECK(ring[1].y == 20.f);
+  // As large as the image, or empty: none.
+  CHECK(PeakContrast::ring(Box{0, 0, 640, 480}, 640, 480, ring) == 0);
+  CHECK(PeakContrast::ring(Box{}, 640, 480, ring) == 0);
+}
+
+TEST_CASE("PeakContrast: a peak stands out, a plateau does not", "[core][components]") {
+  const float background[4] = {-0.8f, -0.6f, -0.9f, -0.7f};
+  const float plateau[4] = {0.05f, -0.02f, 0.01f, 0.f};
+  CHECK(PeakContrast::of(0.6f, background, 4) == Approx(1.35f));
+  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, background, 4)));
+  CHECK(PeakContrast::flat(PeakContrast::of(0.02f, plateau, 4)));  // a plain wall
+  // A look-alike beside the target on one side only still leaves it standing out.
+  const float oneTwin[4] = {0.6f, -0.8f, -0.8f, -0.8f};
+  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, oneTwin, 4)));
+  // Nothing to compare with: taken to stand out.
+  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.f, background, 0)));
 }

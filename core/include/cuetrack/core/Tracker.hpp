@@ -80,6 +80,7 @@ class Tracker {
     Box box{};
     float confidence = 0.f;     // (c + 1) / 2 at the estimate
     float concentration = 0.f;  // weighted mean overlap of the particles with it
+    float contrast = 0.f;       // PeakContrast: the score above the windows around it
   };
   // update()'s stages, in order.
   PixelRect predict(float dtS, int framesElapsed,
