@@ -311,11 +311,32 @@ SyntheticSource::SyntheticSource(const SceneSpec& spec, uint64_t seed) : _spec(s
 
 void SyntheticSource::objectPosition(int i, float tS, float outMm[3]) const {
   const MotionSpec& m = _spec.objects[i].motion;
+  const bool jumped = m.jumpAtS >= 0.f && tS >= m.jumpAtS;
   for (int a = 0; a < 3; ++a) {
-    outMm[a] = m.startMm[a] + m.velocityMmPerS[a] * tS;
+    if (jumped) {
+      outMm[a] = m.startMm[a] + m.velocityMmPerS[a] * m.jumpAtS + m.jumpMm[a] +
+                 m.jumpVelocityMmPerS[a] * (tS - m.jumpAtS);
+    } else {
+      outMm[a] = m.startMm[a] + m.velocityMmPerS[a] * tS;
+    }
     if (m.amplitudeMm[a] != 0.f && m.periodS[a] > 0.f)
       outMm[a] += m.amplitudeMm[a] * std::sin(2.f * kPi * tS / m.periodS[a] + m.phaseRad[a]);
+    if (m.triangleAmplitudeMm[a] != 0.f && m.trianglePeriodS[a] > 0.f) {
+      // tri(f) = 1 - 4 |frac(f) - 1/2|: no libm, the same bits everywhere.
+      const float f = tS / m.trianglePeriodS[a] + m.trianglePhase[a];
+      const float frac = f - static_cast<float>(floorToInt(f));
+      const float d = frac - 0.5f;
+      outMm[a] += m.triangleAmplitudeMm[a] * (1.f - 4.f * (d < 0.f ? -d : d));
+    }
   }
+}
+
+float SyntheticSource::objectYaw(int i, float tS) const {
+  const SceneObject& o = _spec.objects[i];
+  float yaw = o.yawRad + o.yawRateRadPerS * tS;
+  if (o.yawAmplitudeRad != 0.f && o.yawPeriodS > 0.f)
+    yaw += o.yawAmplitudeRad * std::sin(2.f * kPi * tS / o.yawPeriodS + o.yawPhaseRad);
+  return yaw;
 }
 
 ReadStatus SyntheticSource::next(FrameSlot& out) {
@@ -348,7 +369,7 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
     posed[i].index = i;
     objectPosition(i, tS, posed[i].c);
     const SceneObject& o = _spec.objects[i];
-    const float yaw = o.yawRad + o.yawRateRadPerS * tS;
+    const float yaw = objectYaw(i, tS);
     posed[i].yawed = o.shape == ShapeKind::Box && yaw != 0.f;
     posed[i].cosYaw = posed[i].yawed ? std::cos(yaw) : 1.f;
     posed[i].sinYaw = posed[i].yawed ? std::sin(yaw) : 0.f;
@@ -370,13 +391,14 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
   }
   _truth.radiusMm = tgt.radiusMm;
   _truth.heightMm = tgt.heightMm;
-  if (tgt.shape == ShapeKind::Box) _truth.yawRad = tgt.yawRad + tgt.yawRateRadPerS * tS;
+  if (tgt.shape == ShapeKind::Box) _truth.yawRad = objectYaw(_spec.targetIndex, tS);
   int visible = 0;
   const uint8_t target = static_cast<uint8_t>(_spec.targetIndex);
   for (int i = 0; i < w * h; ++i) visible += _owner[i] == target;
   _truth.visiblePixels = visible;
 
   applyDepthModel(out, frameSeed);
+  if (_spec.edgeHoleProbability > 0.f) applyEdgeHoles(out, frameSeed);
 
   out.hasGroundTruth = true;
   out.groundTruth = visible > 0 ? _truth.projectedBox : Box{};
@@ -694,6 +716,56 @@ void SyntheticSource::applyDepthModel(FrameSlot& out, uint32_t frameSeed) {
       const bool shadowed = shadows && up > runMin;
       runMin = up < runMin ? up : runMin;
       dmm[u] = shadowed ? 0 : _rawToMm.mm[_rowRaw[u]];
+    }
+  }
+}
+
+void SyntheticSource::applyEdgeHoles(FrameSlot& out, uint32_t frameSeed) {
+  // Only pixels within the band of the target's projected box can be near its silhouette.
+  const Box& b = _truth.projectedBox;
+  if (b.empty() || _truth.projectedPixels == 0) return;
+  const int w = _spec.width, h = _spec.height;
+  const int band =
+      _spec.edgeHoleBandPx < 1 ? 1 : (_spec.edgeHoleBandPx > 8 ? 8 : _spec.edgeHoleBandPx);
+  const uint8_t target = static_cast<uint8_t>(_spec.targetIndex);
+  int u0 = static_cast<int>(b.x) - band, v0 = static_cast<int>(b.y) - band;
+  int u1 = static_cast<int>(std::ceil(b.x + b.w)) + band;
+  int v1 = static_cast<int>(std::ceil(b.y + b.h)) + band;
+  u0 = u0 < 0 ? 0 : u0;
+  v0 = v0 < 0 ? 0 : v0;
+  u1 = u1 > w ? w : u1;
+  v1 = v1 > h ? h : v1;
+  // Drop thresholds per distance, in 1/2^24 steps.
+  uint32_t threshold[9] = {};
+  for (int d = 1; d <= band; ++d)
+    threshold[d] =
+        static_cast<uint32_t>(_spec.edgeHoleProbability * static_cast<float>(band + 1 - d) /
+                              static_cast<float>(band) * 16777216.f);
+  uint16_t* depth = out.depthMm.data();
+  for (int v = v0; v < v1; ++v) {
+    for (int u = u0; u < u1; ++u) {
+      const bool inside = _owner[v * w + u] == target;
+      // Chebyshev distance to the other side of the silhouette: the first ring reaching it.
+      int dist = 0;
+      for (int r = 1; r <= band && dist == 0; ++r) {
+        for (int dv = -r; dv <= r && dist == 0; ++dv) {
+          const int vv = v + dv;
+          if (vv < 0 || vv >= h) continue;
+          const int step = (dv == -r || dv == r) ? 1 : 2 * r;
+          for (int du = -r; du <= r; du += step) {
+            const int uu = u + du;
+            if (uu < 0 || uu >= w) continue;
+            if ((_owner[vv * w + uu] == target) != inside) {
+              dist = r;
+              break;
+            }
+          }
+        }
+      }
+      if (dist == 0) continue;
+      uint64_t s = (static_cast<uint64_t>(frameSeed) << 32) ^
+                   (static_cast<uint64_t>(v * w + u) * 0xD1B54A32D192ED03ull);
+      if (static_cast<uint32_t>(splitmix64(s) >> 40) < threshold[dist]) depth[v * w + u] = 0;
     }
   }
 }
