@@ -146,6 +146,20 @@ struct SceneSpec {
 //   approach      target comes from 4.5 m to 0.8 m: strong perspective scale change
 //   box           a textured box moving (shape variety)
 //   turn          an elongated box turns 90 degrees from side-on to end-on: image width ~1/3
+//   fast          target at 2 m sweeping sideways at 40 px a frame, turning at the image's
+//                 sides (a triangle wave): abrupt motion
+//   lookalike     a same-textured, slightly smaller cylinder 800 mm nearer passes in front
+//                 of the target, pausing over it: hidden completely for 21 frames (65-85)
+//   leave-return  target leaves on the right, is out of view for exactly 30 frames (48-77),
+//                 comes back from the left edge higher up and stays in view
+//   against-surface  a flat box (a bag) slides along a large textured board whose front is
+//                 40 mm behind the bag's back: little depth contrast; truth is the bag only
+//   held          target moving with a skin-coloured "hand" (a box in front of it) hiding
+//                 14-35 % of it
+//   flat-turn     a flat box (a book) turns from face-on to 78 degrees and back: image
+//                 width changes ~2.6x
+//   edge-holes    moving target whose depth drops out on a 3 px band along its silhouette
+//                 (edgeHoleProbability), on top of the projector shadow
 bool makeScene(const char* name, SceneSpec* out);
 int sceneCount();
 const char* sceneName(int i);  // nullptr when out of range
