@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <vector>
 
 #include "AllocCounter.hpp"
 #include "cuetrack/drivers/KinectDepth.hpp"
@@ -261,6 +262,265 @@ TEST_CASE("turn scene: the box yaws 90 degrees, its width shrinks ~3x, truth fol
   CHECK(w0 > 90.f);
 }
 
+namespace {
+// Centre of a box [px].
+float centreX(const Box& b) {
+  return b.x + b.w * 0.5f;
+}
+float centreY(const Box& b) {
+  return b.y + b.h * 0.5f;
+}
+bool insideImage(const Box& b) {
+  return !b.empty() && b.x >= 0.f && b.y >= 0.f && b.x + b.w <= 640.f && b.y + b.h <= 480.f;
+}
+// Zero-depth share over the pixels of columns [x0, x1) and rows [y0, y1), clipped to the image.
+double zeroShare(const FrameSlot& f, int x0, int x1, int y0, int y1) {
+  int zeros = 0, n = 0;
+  for (int y = std::max(y0, 0); y < std::min(y1, 480); ++y)
+    for (int x = std::max(x0, 0); x < std::min(x1, 640); ++x) {
+      zeros += f.depthMm.data()[y * 640 + x] == 0;
+      ++n;
+    }
+  return n ? static_cast<double>(zeros) / n : 0.0;
+}
+// Median of the valid depths over columns [x0, x1), rows [y0, y1) [mm]; 0 when none.
+int medianDepth(const FrameSlot& f, int x0, int x1, int y0, int y1) {
+  std::vector<uint16_t> d;
+  for (int y = std::max(y0, 0); y < std::min(y1, 480); ++y)
+    for (int x = std::max(x0, 0); x < std::min(x1, 640); ++x)
+      if (const uint16_t v = f.depthMm.data()[y * 640 + x]) d.push_back(v);
+  if (d.empty()) return 0;
+  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+}  // namespace
+
+TEST_CASE("fast: the target's box moves about 40 px every frame and stays in view", "[synth]") {
+  auto src = std::make_unique<SyntheticSource>(scene("fast", 150), 3);
+  auto slot = std::make_unique<FrameSlot>();
+  REQUIRE(src->spec().objects[0].motion.triangleAmplitudeMm[0] > 0.f);
+  // Pairs of consecutive frames, every third pair (quick under qemu): 50 steps.
+  int steps = 0, fastSteps = 0;
+  for (int f = 0; f + 1 < 150; f += 3) {
+    REQUIRE(src->render(f, *slot));
+    const Box a = src->truth().projectedBox;
+    REQUIRE(src->render(f + 1, *slot));
+    const Box b = src->truth().projectedBox;
+    CHECK(insideImage(a));
+    CHECK(insideImage(b));
+    CHECK(src->truth().visibleFraction() == 1.f);
+    const float d = std::hypot(centreX(b) - centreX(a), centreY(b) - centreY(a));
+    INFO("frame " << f << " step " << d);
+    CHECK(d < 44.f);
+    ++steps;
+    fastSteps += d >= 38.f;
+  }
+  CHECK(fastSteps >= steps * 9 / 10);
+}
+
+TEST_CASE("lookalike: a same-textured cylinder in front hides the target for >= 10 frames",
+          "[synth]") {
+  SceneSpec spec = scene("lookalike", 150);
+  REQUIRE(spec.numObjects == 2);
+  const SceneObject& target = spec.objects[spec.targetIndex];
+  const SceneObject& look = spec.objects[1 - spec.targetIndex];
+  CHECK(look.texture.kind == target.texture.kind);  // the same texture, field by field
+  CHECK(std::memcmp(&look.texture.colourA, &target.texture.colourA, sizeof(Rgb8)) == 0);
+  CHECK(std::memcmp(&look.texture.colourB, &target.texture.colourB, sizeof(Rgb8)) == 0);
+  CHECK(look.texture.seed == target.texture.seed);
+  CHECK(look.texture.texelMm == target.texture.texelMm);
+  CHECK(look.shape == target.shape);
+  auto src = std::make_unique<SyntheticSource>(spec, 3);
+  // The look-alike's own truth: the same scene with it as the target.
+  SceneSpec lookSpec = spec;
+  lookSpec.targetIndex = 1 - spec.targetIndex;
+  auto lookSrc = std::make_unique<SyntheticSource>(lookSpec, 3);
+  auto slot = std::make_unique<FrameSlot>();
+  int run = 0, longest = 0;
+  for (int f = 40; f < 110; ++f) {
+    REQUIRE(src->render(f, *slot));
+    const SynthTruth& t = src->truth();
+    const bool hidden = t.visiblePixels == 0 && insideImage(t.projectedBox);
+    if (hidden) {
+      CHECK(slot->groundTruth.empty());
+      REQUIRE(lookSrc->render(f, *slot));
+      const SynthTruth& l = lookSrc->truth();
+      CHECK(l.centreMm[2] < t.centreMm[2] - 500.f);  // in front
+      // About the target's image size, a bit larger (it must cover it).
+      CHECK(l.projectedBox.w >= t.projectedBox.w);
+      CHECK(l.projectedBox.w <= 1.5f * t.projectedBox.w);
+      CHECK(l.projectedBox.h <= 1.5f * t.projectedBox.h);
+    }
+    run = hidden ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  CHECK(longest >= 10);
+  // Seen whole before and after.
+  for (int f : {0, 30, 120, 149}) {
+    REQUIRE(src->render(f, *slot));
+    CHECK(src->truth().visibleFraction() == 1.f);
+  }
+}
+
+TEST_CASE("leave-return: out of view for exactly 30 frames, back elsewhere, stays", "[synth]") {
+  auto src = std::make_unique<SyntheticSource>(scene("leave-return", 150), 3);
+  auto slot = std::make_unique<FrameSlot>();
+  int emptyFrames = 0, runs = 0, firstEmpty = -1;
+  bool wasEmpty = false;
+  Box lastBefore{}, firstAfter{};
+  for (int f = 0; f < 150; ++f) {
+    REQUIRE(src->render(f, *slot));
+    const bool empty = slot->groundTruth.empty();
+    CHECK(empty == src->truth().projectedBox.empty());  // out of view, not hidden
+    if (empty) {
+      ++emptyFrames;
+      if (!wasEmpty) {
+        ++runs;
+        firstEmpty = f;
+      }
+    } else if (runs == 0) {
+      lastBefore = slot->groundTruth;
+    } else if (firstAfter.empty()) {
+      firstAfter = slot->groundTruth;
+    }
+    wasEmpty = empty;
+  }
+  CHECK(runs == 1);
+  CHECK(emptyFrames == 30);
+  CHECK(firstEmpty > 0);
+  CHECK_FALSE(wasEmpty);  // in view at the end
+  INFO("left at x " << centreX(lastBefore) << ", back at x " << centreX(firstAfter));
+  CHECK(centreX(lastBefore) > 600.f);  // left on the right
+  CHECK(centreX(firstAfter) < 40.f);   // back on the left
+  CHECK(std::hypot(centreX(firstAfter) - centreX(lastBefore),
+                   centreY(firstAfter) - centreY(lastBefore)) >= 200.f);
+}
+
+TEST_CASE("against-surface: the depth just outside the target is the board's, close behind",
+          "[synth]") {
+  SceneSpec spec = scene("against-surface", 150);
+  REQUIRE(spec.numObjects == 2);
+  auto src = std::make_unique<SyntheticSource>(spec, 3);
+  auto slot = std::make_unique<FrameSlot>();
+  int frames = 0, close = 0;
+  for (int f = 0; f < 150; f += 5) {
+    REQUIRE(src->render(f, *slot));
+    const Box gt = slot->groundTruth;
+    const SynthTruth& t = src->truth();
+    REQUIRE(insideImage(gt));
+    CHECK(t.visibleFraction() == 1.f);
+    CHECK(gt.w < 80.f);  // the bag alone (the board is ~500 px wide)
+    // Columns 3..6 px beyond the box's left edge (past the projector's ~1 px shadow) and
+    // 2..5 px beyond its right edge, over the middle half of its rows.
+    const int y0 = static_cast<int>(gt.y + gt.h * 0.25f),
+              y1 = static_cast<int>(gt.y + gt.h * 0.75f);
+    const int xl = static_cast<int>(gt.x), xr = static_cast<int>(std::ceil(gt.x + gt.w));
+    const int left = medianDepth(*slot, xl - 6, xl - 2, y0, y1);
+    const int right = medianDepth(*slot, xr + 2, xr + 6, y0, y1);
+    const float z = t.centreMm[2];
+    INFO("frame " << f << " centre z " << z << " left " << left << " right " << right);
+    CHECK(left > z);  // behind the target: the board
+    CHECK(right > z);
+    ++frames;
+    close += std::abs(left - z) <= 100.f && std::abs(right - z) <= 100.f;
+  }
+  CHECK(close >= frames * 8 / 10);
+}
+
+TEST_CASE("held: a skin-coloured hand in front hides 10-40 % of the target", "[synth]") {
+  SceneSpec spec = scene("held", 150);
+  REQUIRE(spec.numObjects == 2);
+  auto src = std::make_unique<SyntheticSource>(spec, 3);
+  auto slot = std::make_unique<FrameSlot>();
+  const SceneObject& hand = spec.objects[1 - spec.targetIndex];
+  CHECK(hand.texture.colourA.r > hand.texture.colourA.g);  // skin: red > green > blue
+  CHECK(hand.texture.colourA.g > hand.texture.colourA.b);
+  int frames = 0, inRange = 0;
+  for (int f = 0; f < 150; f += 2) {
+    REQUIRE(src->render(f, *slot));
+    const float v = src->truth().visibleFraction();
+    INFO("frame " << f << " visible " << v);
+    CHECK(v > 0.f);
+    ++frames;
+    inRange += v >= 0.6f && v <= 0.9f;
+    float h[3], c[3];
+    src->objectPosition(1 - spec.targetIndex, static_cast<float>(f) / 30.f, h);
+    src->objectPosition(spec.targetIndex, static_cast<float>(f) / 30.f, c);
+    CHECK(h[2] < c[2] - 100.f);  // nearer the camera
+  }
+  CHECK(inRange >= frames * 8 / 10);
+}
+
+TEST_CASE("flat-turn: a flat box turns face-on -> nearly edge-on -> face-on", "[synth]") {
+  auto src = std::make_unique<SyntheticSource>(scene("flat-turn", 150), 3);
+  auto slot = std::make_unique<FrameSlot>();
+  const SceneObject& b = src->spec().objects[0];
+  CHECK(b.shape == ShapeKind::Box);
+  CHECK(b.halfDepthMm * 4.f <= b.radiusMm);  // flat
+  float minW = 1e9f, maxW = 0.f, maxYaw = 0.f;
+  for (int f = 0; f < 150; f += 3) {
+    REQUIRE(src->render(f, *slot));
+    const Box gt = slot->groundTruth;
+    CHECK(insideImage(gt));
+    minW = std::min(minW, gt.w);
+    maxW = std::max(maxW, gt.w);
+    maxYaw = std::max(maxYaw, src->truth().yawRad);
+  }
+  INFO("width " << minW << " .. " << maxW << ", yaw up to " << maxYaw);
+  CHECK(maxW >= 2.f * minW);
+  CHECK(maxYaw < 1.45f);  // never edge-on (pi / 2)
+  CHECK(maxYaw > 1.2f);
+  REQUIRE(src->render(149, *slot));
+  CHECK(src->truth().yawRad < 0.05f);  // face-on again at the end
+}
+
+TEST_CASE("edge-holes: depth drops out along the target's silhouette, only when asked", "[synth]") {
+  SceneSpec spec = scene("edge-holes", 150);
+  REQUIRE(spec.edgeHoleProbability > 0.f);
+  SceneSpec off = spec;
+  off.edgeHoleProbability = 0.f;
+  auto on = std::make_unique<SyntheticSource>(spec, 3);
+  auto plain = std::make_unique<SyntheticSource>(off, 3);
+  auto slot = std::make_unique<FrameSlot>();
+  auto plainSlot = std::make_unique<FrameSlot>();
+  double shareOn = 0, shareOff = 0, coreOn = 0, coreOff = 0;
+  int frames = 0;
+  for (int f = 0; f < 150; f += 10) {
+    REQUIRE(on->render(f, *slot));
+    REQUIRE(plain->render(f, *plainSlot));
+    const Box gt = slot->groundTruth;
+    REQUIRE(insideImage(gt));
+    CHECK(plainSlot->groundTruth.x == gt.x);  // the same scene otherwise
+    // Bands along the box's left and right edges (where the cylinder's silhouette runs),
+    // over the middle 60 % of its rows: 3 px inside on the left (the projector's shadow is
+    // outside there anyway), 3 px inside and 3 px outside on the right; and its centre.
+    const int y0 = static_cast<int>(gt.y + gt.h * 0.2f), y1 = static_cast<int>(gt.y + gt.h * 0.8f);
+    const int xl = static_cast<int>(gt.x + 0.5f), xr = static_cast<int>(gt.x + gt.w + 0.5f);
+    auto band = [&](const FrameSlot& s) {
+      return 0.5 * (zeroShare(s, xl, xl + 3, y0, y1) + zeroShare(s, xr - 3, xr + 3, y0, y1));
+    };
+    const int cx = static_cast<int>(centreX(gt));
+    shareOn += band(*slot);
+    shareOff += band(*plainSlot);
+    coreOn += zeroShare(*slot, cx - 5, cx + 5, y0, y1);
+    coreOff += zeroShare(*plainSlot, cx - 5, cx + 5, y0, y1);
+    ++frames;
+  }
+  shareOn /= frames;
+  shareOff /= frames;
+  INFO("zero depth on the edge bands: " << shareOn << " with, " << shareOff << " without");
+  CHECK(shareOn >= 0.2);
+  CHECK(shareOn >= 3.0 * shareOff + 0.1);
+  CHECK(coreOn == coreOff);  // the target's inside keeps its depth
+  // Colour and ground truth do not change; another seed drops other pixels.
+  REQUIRE(on->render(30, *slot));
+  REQUIRE(plain->render(30, *plainSlot));
+  CHECK(std::memcmp(slot->rgb.data(), plainSlot->rgb.data(), 640 * 480 * 3) == 0);
+  auto other = std::make_unique<SyntheticSource>(spec, 4);
+  REQUIRE(other->render(30, *plainSlot));
+  CHECK(std::memcmp(slot->depthMm.data(), plainSlot->depthMm.data(), 640 * 480 * 2) != 0);
+}
+
 TEST_CASE("untextured scene: colour cannot see the target, depth can", "[synth]") {
   SceneSpec spec = scene("untextured", 1);
   spec.colourNoise = 0;
@@ -357,6 +617,15 @@ TEST_CASE("no allocation per synthetic frame", "[synth][alloc]") {
   while (src->next(*slot) == ReadStatus::Ok) ++n;
   CHECK(n == 10);
   CHECK(scope.allocations() == 0);
+  // The edge dropout pass and the moving, jumping and turning motions too.
+  for (const char* name : {"edge-holes", "leave-return", "flat-turn", "fast"}) {
+    INFO(name);
+    auto other = std::make_unique<SyntheticSource>(scene(name, 150), 9);
+    REQUIRE(other->render(0, *slot));
+    test::AllocScope again;
+    for (int f = 70; f < 80; ++f) REQUIRE(other->render(f, *slot));
+    CHECK(again.allocations() == 0);
+  }
 }
 
 TEST_CASE("synthetic frames are the same bytes on x86, aarch64 and armhf", "[synth][golden]") {
@@ -369,9 +638,21 @@ TEST_CASE("synthetic frames are the same bytes on x86, aarch64 and armhf", "[syn
     uint64_t hash;
   };
   const Golden golden[] = {
-      {"occlusion", 0, 0xd9dccb0788bc30f1ull},  {"occlusion", 70, 0x1eb28688b530445full},
-      {"occlusion", 80, 0x25eddac899d125aaull}, {"lighting", 0, 0x0ccdc56fdf4bc560ull},
-      {"lighting", 70, 0xf6c4eed439afec41ull},  {"lighting", 80, 0xdca6fc4bedac2694ull},
+      {"occlusion", 0, 0xd9dccb0788bc30f1ull},
+      {"occlusion", 70, 0x1eb28688b530445full},
+      {"occlusion", 80, 0x25eddac899d125aaull},
+      {"lighting", 0, 0x0ccdc56fdf4bc560ull},
+      {"lighting", 70, 0xf6c4eed439afec41ull},
+      {"lighting", 80, 0xdca6fc4bedac2694ull},
+      // The scenes added with the triangle wave, the jump, the yaw sway and edge dropout.
+      {"fast", 0, 0xa5d17f8acd009dacull},
+      {"fast", 6, 0x0d98039a91c580c8ull},
+      {"lookalike", 75, 0x6816df2979c5e093ull},
+      {"leave-return", 78, 0xcfb6a4f80162cf7bull},
+      {"against-surface", 60, 0xc204f4c4d853d32aull},
+      {"held", 45, 0xcf856b1c0e2834d8ull},
+      {"flat-turn", 75, 0x66a8178efdcf8ea0ull},
+      {"edge-holes", 40, 0x4901a31a81dae561ull},
   };
   auto slot = std::make_unique<FrameSlot>();
   for (const Golden& g : golden) {

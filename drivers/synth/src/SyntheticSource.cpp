@@ -119,9 +119,17 @@ inline void clipSlab(float a, float b, int slabFace, float* tn, float* tf, int* 
   if (b < *tf) *tf = b;
 }
 
-constexpr const char* kSceneNames[] = {"moving",   "twin-crossing", "occlusion", "untextured",
-                                       "lighting", "approach",      "box",       "turn"};
+constexpr const char* kSceneNames[] = {
+    "moving", "twin-crossing", "occlusion", "untextured", "lighting",     "approach",
+    "box",    "turn",          "fast",      "lookalike",  "leave-return", "against-surface",
+    "held",   "flat-turn",     "edge-holes"};
 constexpr int kNumScenes = static_cast<int>(sizeof(kSceneNames) / sizeof(kSceneNames[0]));
+
+// leave-return: the target's box is empty from frame kLeaveFirst to kLeaveFirst + 29; the
+// jump happens half a frame before kLeaveFirst + 30.
+constexpr int kLeaveFirst = 48;
+constexpr float kLeaveReturnJumpFrame = kLeaveFirst + 30 - 0.5f;
+constexpr float kLeaveReturnJumpXMm = -3290.f;  // back at x = -1277.5 mm: 1/3 in view
 
 SceneObject texturedCylinder() {
   SceneObject o;
@@ -248,6 +256,142 @@ bool makeScene(const char* name, SceneSpec* out) {
     b.motion.velocityMmPerS[0] = 60.f;
     s.objects[0] = b;
     s.numObjects = 1;
+  } else if (n == "fast") {
+    // 40 px a frame sideways at 2 m (fx 518: 4633 mm/s), turning every 12 frames at
+    // 240 px either side of the image centre (frames 6, 18, 30, ...): every frame's step is
+    // a full 40 px; a slow vertical sway besides.
+    t.motion.startMm[0] = 0.f;
+    t.motion.startMm[1] = 150.f;
+    t.motion.startMm[2] = 2000.f;
+    t.motion.triangleAmplitudeMm[0] = 240.f * 2000.f / 518.f;
+    t.motion.trianglePeriodS[0] = 0.8f;
+    t.motion.trianglePhase[0] = 0.25f;  // at the centre, moving right
+    t.motion.amplitudeMm[1] = 40.f;
+    t.motion.periodS[1] = 2.f;
+    s.objects[0] = t;
+    s.numObjects = 1;
+  } else if (n == "lookalike") {
+    // The target drifts left at 2.4 m; a same-textured cylinder (radius 65 mm, 220 mm tall:
+    // ~1.2x the target's image size) at 1.6 m sweeps left -> right, its speed falling to 0
+    // at t = 2.5 s, right over the target (x(t) = -1000 + 400 t + 318.3 sin(2 pi t / 5)).
+    t.motion.startMm[0] = 100.f;
+    t.motion.startMm[1] = 200.f;
+    t.motion.startMm[2] = 2400.f;
+    t.motion.velocityMmPerS[0] = -40.f;
+    SceneObject look = t;
+    look.radiusMm = 65.f;
+    look.heightMm = 220.f;
+    look.motion = MotionSpec{};
+    look.motion.startMm[0] = -1000.f;
+    look.motion.startMm[1] = 136.f;
+    look.motion.startMm[2] = 1600.f;
+    look.motion.velocityMmPerS[0] = 400.f;
+    look.motion.amplitudeMm[0] = 400.f * 5.f / (2.f * kPi);
+    look.motion.periodS[0] = 5.f;
+    s.objects[0] = t;
+    s.objects[1] = look;
+    s.numObjects = 2;
+  } else if (n == "leave-return") {
+    // Out on the right at 700 mm/s; while out of view (frames kLeaveFirst..+29) it jumps to
+    // just inside the left edge, 100 mm higher, and moves on right at 250 mm/s.
+    t.motion.startMm[0] = 200.f;
+    t.motion.startMm[1] = 200.f;
+    t.motion.startMm[2] = 2000.f;
+    t.motion.velocityMmPerS[0] = 700.f;
+    t.motion.jumpAtS = kLeaveReturnJumpFrame / 30.f;
+    t.motion.jumpMm[0] = kLeaveReturnJumpXMm;
+    t.motion.jumpMm[1] = -100.f;
+    t.motion.jumpVelocityMmPerS[0] = 250.f;
+    s.objects[0] = t;
+    s.numObjects = 1;
+  } else if (n == "against-surface") {
+    // A bag (200 x 80 x 260 mm box) at 1.8 m slides right at 120 mm/s along a board
+    // (1400 x 60 x 800 mm) drifting right at 60 mm/s, whose front is 40 mm behind the bag's
+    // back: the bag stands 120 mm out of its background in depth.
+    SceneObject bag;
+    bag.shape = ShapeKind::Box;
+    bag.radiusMm = 100.f;
+    bag.halfDepthMm = 40.f;
+    bag.heightMm = 260.f;
+    bag.texture = {TextureKind::Patches, {40, 120, 180}, {220, 200, 170}, 405, 4.f};
+    bag.motion.startMm[0] = -300.f;
+    bag.motion.startMm[1] = 250.f;
+    bag.motion.startMm[2] = 1800.f;
+    bag.motion.velocityMmPerS[0] = 120.f;
+    SceneObject board;
+    board.shape = ShapeKind::Box;
+    board.radiusMm = 700.f;
+    board.halfDepthMm = 30.f;
+    board.heightMm = 800.f;
+    board.texture = {TextureKind::Patches, {120, 90, 60}, {70, 60, 50}, 404, 8.f};
+    board.motion.startMm[0] = -150.f;
+    board.motion.startMm[1] = 200.f;
+    board.motion.startMm[2] = 1800.f + 40.f + 40.f + 30.f;
+    board.motion.velocityMmPerS[0] = 60.f;
+    s.objects[0] = bag;
+    s.objects[1] = board;
+    s.numObjects = 2;
+  } else if (n == "held") {
+    // The target carried around (x, y and z sways), a "hand" (140 x 50 x 120 mm box, skin
+    // tones in finger-wide stripes) 115 mm in front of its centre over its lower right
+    // half, sliding +-20 mm across it.
+    t.motion.startMm[0] = -100.f;
+    t.motion.startMm[1] = 200.f;
+    t.motion.startMm[2] = 2000.f;
+    t.motion.amplitudeMm[0] = 450.f;
+    t.motion.periodS[0] = 5.f;
+    t.motion.amplitudeMm[1] = 60.f;
+    t.motion.periodS[1] = 3.f;
+    t.motion.amplitudeMm[2] = 300.f;
+    t.motion.periodS[2] = 6.f;
+    t.motion.phaseRad[2] = 1.f;
+    SceneObject hand;
+    hand.shape = ShapeKind::Box;
+    hand.radiusMm = 70.f;
+    hand.halfDepthMm = 25.f;
+    hand.heightMm = 120.f;
+    hand.texture = {TextureKind::Stripes, {222, 170, 138}, {196, 142, 112}, 1, 2.5f};
+    hand.motion = t.motion;
+    hand.motion.startMm[0] += 76.f;
+    hand.motion.startMm[1] += 40.f;
+    hand.motion.startMm[2] -= 115.f;
+    hand.motion.triangleAmplitudeMm[0] = 12.f;
+    hand.motion.trianglePeriodS[0] = 2.5f;
+    s.objects[0] = t;
+    s.objects[1] = hand;
+    s.numObjects = 2;
+  } else if (n == "flat-turn") {
+    // A 260 x 50 x 320 mm box (a book, a flat bag) at 2 m yaws 0.68 (1 - cos(2 pi t / 5))
+    // rad: face-on -> 78 degrees at t = 2.5 s -> face-on, drifting right.
+    SceneObject b;
+    b.shape = ShapeKind::Box;
+    b.radiusMm = 130.f;
+    b.halfDepthMm = 25.f;
+    b.heightMm = 320.f;
+    b.yawRad = 0.68f;
+    b.yawAmplitudeRad = 0.68f;
+    b.yawPeriodS = 5.f;
+    b.yawPhaseRad = -kPi / 2;
+    b.texture = {TextureKind::Patches, {30, 80, 160}, {230, 220, 200}, 606, 4.f};
+    b.motion.startMm[0] = -200.f;
+    b.motion.startMm[1] = 200.f;
+    b.motion.startMm[2] = 2000.f;
+    b.motion.velocityMmPerS[0] = 80.f;
+    s.objects[0] = b;
+    s.numObjects = 1;
+  } else if (n == "edge-holes") {
+    // Moving target (x and z sways) whose depth drops out along its silhouette.
+    t.motion.startMm[0] = 0.f;
+    t.motion.startMm[1] = 200.f;
+    t.motion.startMm[2] = 2000.f;
+    t.motion.amplitudeMm[0] = 500.f;
+    t.motion.periodS[0] = 4.f;
+    t.motion.amplitudeMm[2] = 300.f;
+    t.motion.periodS[2] = 5.f;
+    s.objects[0] = t;
+    s.numObjects = 1;
+    s.edgeHoleProbability = 0.6f;
+    s.edgeHoleBandPx = 3;
   } else {  // box
     SceneObject b;
     b.shape = ShapeKind::Box;
@@ -311,11 +455,32 @@ SyntheticSource::SyntheticSource(const SceneSpec& spec, uint64_t seed) : _spec(s
 
 void SyntheticSource::objectPosition(int i, float tS, float outMm[3]) const {
   const MotionSpec& m = _spec.objects[i].motion;
+  const bool jumped = m.jumpAtS >= 0.f && tS >= m.jumpAtS;
   for (int a = 0; a < 3; ++a) {
-    outMm[a] = m.startMm[a] + m.velocityMmPerS[a] * tS;
+    if (jumped) {
+      outMm[a] = m.startMm[a] + m.velocityMmPerS[a] * m.jumpAtS + m.jumpMm[a] +
+                 m.jumpVelocityMmPerS[a] * (tS - m.jumpAtS);
+    } else {
+      outMm[a] = m.startMm[a] + m.velocityMmPerS[a] * tS;
+    }
     if (m.amplitudeMm[a] != 0.f && m.periodS[a] > 0.f)
       outMm[a] += m.amplitudeMm[a] * std::sin(2.f * kPi * tS / m.periodS[a] + m.phaseRad[a]);
+    if (m.triangleAmplitudeMm[a] != 0.f && m.trianglePeriodS[a] > 0.f) {
+      // tri(f) = 1 - 4 |frac(f) - 1/2|: no libm, the same bits everywhere.
+      const float f = tS / m.trianglePeriodS[a] + m.trianglePhase[a];
+      const float frac = f - static_cast<float>(floorToInt(f));
+      const float d = frac - 0.5f;
+      outMm[a] += m.triangleAmplitudeMm[a] * (1.f - 4.f * (d < 0.f ? -d : d));
+    }
   }
+}
+
+float SyntheticSource::objectYaw(int i, float tS) const {
+  const SceneObject& o = _spec.objects[i];
+  float yaw = o.yawRad + o.yawRateRadPerS * tS;
+  if (o.yawAmplitudeRad != 0.f && o.yawPeriodS > 0.f)
+    yaw += o.yawAmplitudeRad * std::sin(2.f * kPi * tS / o.yawPeriodS + o.yawPhaseRad);
+  return yaw;
 }
 
 ReadStatus SyntheticSource::next(FrameSlot& out) {
@@ -348,7 +513,7 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
     posed[i].index = i;
     objectPosition(i, tS, posed[i].c);
     const SceneObject& o = _spec.objects[i];
-    const float yaw = o.yawRad + o.yawRateRadPerS * tS;
+    const float yaw = objectYaw(i, tS);
     posed[i].yawed = o.shape == ShapeKind::Box && yaw != 0.f;
     posed[i].cosYaw = posed[i].yawed ? std::cos(yaw) : 1.f;
     posed[i].sinYaw = posed[i].yawed ? std::sin(yaw) : 0.f;
@@ -370,13 +535,14 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
   }
   _truth.radiusMm = tgt.radiusMm;
   _truth.heightMm = tgt.heightMm;
-  if (tgt.shape == ShapeKind::Box) _truth.yawRad = tgt.yawRad + tgt.yawRateRadPerS * tS;
+  if (tgt.shape == ShapeKind::Box) _truth.yawRad = objectYaw(_spec.targetIndex, tS);
   int visible = 0;
   const uint8_t target = static_cast<uint8_t>(_spec.targetIndex);
   for (int i = 0; i < w * h; ++i) visible += _owner[i] == target;
   _truth.visiblePixels = visible;
 
   applyDepthModel(out, frameSeed);
+  if (_spec.edgeHoleProbability > 0.f) applyEdgeHoles(out, frameSeed);
 
   out.hasGroundTruth = true;
   out.groundTruth = visible > 0 ? _truth.projectedBox : Box{};
@@ -694,6 +860,56 @@ void SyntheticSource::applyDepthModel(FrameSlot& out, uint32_t frameSeed) {
       const bool shadowed = shadows && up > runMin;
       runMin = up < runMin ? up : runMin;
       dmm[u] = shadowed ? 0 : _rawToMm.mm[_rowRaw[u]];
+    }
+  }
+}
+
+void SyntheticSource::applyEdgeHoles(FrameSlot& out, uint32_t frameSeed) {
+  // Only pixels within the band of the target's projected box can be near its silhouette.
+  const Box& b = _truth.projectedBox;
+  if (b.empty() || _truth.projectedPixels == 0) return;
+  const int w = _spec.width, h = _spec.height;
+  const int band =
+      _spec.edgeHoleBandPx < 1 ? 1 : (_spec.edgeHoleBandPx > 8 ? 8 : _spec.edgeHoleBandPx);
+  const uint8_t target = static_cast<uint8_t>(_spec.targetIndex);
+  int u0 = static_cast<int>(b.x) - band, v0 = static_cast<int>(b.y) - band;
+  int u1 = static_cast<int>(std::ceil(b.x + b.w)) + band;
+  int v1 = static_cast<int>(std::ceil(b.y + b.h)) + band;
+  u0 = u0 < 0 ? 0 : u0;
+  v0 = v0 < 0 ? 0 : v0;
+  u1 = u1 > w ? w : u1;
+  v1 = v1 > h ? h : v1;
+  // Drop thresholds per distance, in 1/2^24 steps.
+  uint32_t threshold[9] = {};
+  for (int d = 1; d <= band; ++d)
+    threshold[d] =
+        static_cast<uint32_t>(_spec.edgeHoleProbability * static_cast<float>(band + 1 - d) /
+                              static_cast<float>(band) * 16777216.f);
+  uint16_t* depth = out.depthMm.data();
+  for (int v = v0; v < v1; ++v) {
+    for (int u = u0; u < u1; ++u) {
+      const bool inside = _owner[v * w + u] == target;
+      // Chebyshev distance to the other side of the silhouette: the first ring reaching it.
+      int dist = 0;
+      for (int r = 1; r <= band && dist == 0; ++r) {
+        for (int dv = -r; dv <= r && dist == 0; ++dv) {
+          const int vv = v + dv;
+          if (vv < 0 || vv >= h) continue;
+          const int step = (dv == -r || dv == r) ? 1 : 2 * r;
+          for (int du = -r; du <= r; du += step) {
+            const int uu = u + du;
+            if (uu < 0 || uu >= w) continue;
+            if ((_owner[vv * w + uu] == target) != inside) {
+              dist = r;
+              break;
+            }
+          }
+        }
+      }
+      if (dist == 0) continue;
+      uint64_t s = (static_cast<uint64_t>(frameSeed) << 32) ^
+                   (static_cast<uint64_t>(v * w + u) * 0xD1B54A32D192ED03ull);
+      if (static_cast<uint32_t>(splitmix64(s) >> 40) < threshold[dist]) depth[v * w + u] = 0;
     }
   }
 }

@@ -46,13 +46,25 @@ struct TextureSpec {
   float texelMm = 4.f;  // size of one texel on the surface [mm]
 };
 
-// Position over time, per axis: start + velocity * t + amplitude * sin(2 pi t / period + phase).
+// Position over time, per axis: start + velocity * t + amplitude * sin(2 pi t / period + phase)
+// + triangleAmplitude * tri(t / trianglePeriod + trianglePhase), where tri(f) = 1 - 4 |frac(f) -
+// 1/2| runs -1 -> 1 -> -1 over a period (0 and rising at phase 0.25; constant speed 4
+// triangleAmplitude / trianglePeriod between the turns). From jumpAtS on (when >= 0) the linear
+// part jumps by jumpMm and moves on at jumpVelocityMmPerS: start + velocity * jumpAtS
+// + jumpMm + jumpVelocity * (t - jumpAtS) (a teleport, e.g. while out of view). The triangle
+// and the jump are off by default (amplitude 0, jumpAtS < 0).
 struct MotionSpec {
   float startMm[3] = {0.f, 0.f, 2000.f};  // camera coordinates: x right, y down, z forward [mm]
   float velocityMmPerS[3] = {0.f, 0.f, 0.f};
   float amplitudeMm[3] = {0.f, 0.f, 0.f};
   float periodS[3] = {1.f, 1.f, 1.f};
   float phaseRad[3] = {0.f, 0.f, 0.f};
+  float triangleAmplitudeMm[3] = {0.f, 0.f, 0.f};
+  float trianglePeriodS[3] = {0.f, 0.f, 0.f};  // <= 0: no triangle term
+  float trianglePhase[3] = {0.f, 0.f, 0.f};    // [periods]
+  float jumpAtS = -1.f;                        // < 0: no jump
+  float jumpMm[3] = {0.f, 0.f, 0.f};
+  float jumpVelocityMmPerS[3] = {0.f, 0.f, 0.f};
 };
 
 enum class ShapeKind : uint8_t {
@@ -65,11 +77,15 @@ struct SceneObject {
   float radiusMm = 60.f;     // cylinder radius, or box half-width along x [mm]
   float halfDepthMm = 60.f;  // box half-depth along z [mm] (cylinders: unused)
   float heightMm = 200.f;    // [mm]
-  // Boxes: yaw about the vertical (camera y) axis, yawRad + yawRateRadPerS * t; positive
-  // turns the box's +x side away from the camera (towards +z). Cylinders: unused.
-  // 0 and 0 (the default) renders exactly the axis-aligned box.
+  // Boxes: yaw about the vertical (camera y) axis, yawRad + yawRateRadPerS * t
+  // + yawAmplitudeRad * sin(2 pi t / yawPeriodS + yawPhaseRad); positive turns the box's +x
+  // side away from the camera (towards +z). Cylinders: unused. A yaw of 0 (all zero, the
+  // default) renders exactly the axis-aligned box.
   float yawRad = 0.f;
   float yawRateRadPerS = 0.f;
+  float yawAmplitudeRad = 0.f;
+  float yawPeriodS = 0.f;  // <= 0: no oscillation
+  float yawPhaseRad = 0.f;
   MotionSpec motion{};
   TextureSpec texture{};
   bool shaded = true;  // Lambertian shading; off for the untextured scene
@@ -113,6 +129,12 @@ struct SceneSpec {
   float baselineMm = 75.f;  // IR projector to camera
   uint16_t minDepthMm = 500;
   uint16_t maxDepthMm = 8000;
+  // Edge dropout (the Kinect loses depth along depth edges, beyond the projector's shadow):
+  // a pixel within edgeHoleBandPx (Chebyshev distance d, 1..8) of the target's silhouette,
+  // on either side of it, reads 0 with probability edgeHoleProbability * (band + 1 - d) / band,
+  // drawn per pixel and frame from the seed. 0 (the default): off.
+  float edgeHoleProbability = 0.f;
+  int edgeHoleBandPx = 3;
 };
 
 // Fills *out with a named scene at 640x480, 150 frames, 30 fps; false for an unknown name.
@@ -124,6 +146,20 @@ struct SceneSpec {
 //   approach      target comes from 4.5 m to 0.8 m: strong perspective scale change
 //   box           a textured box moving (shape variety)
 //   turn          an elongated box turns 90 degrees from side-on to end-on: image width ~1/3
+//   fast          target at 2 m sweeping sideways at 40 px a frame, turning at the image's
+//                 sides (a triangle wave): abrupt motion
+//   lookalike     a same-textured, slightly smaller cylinder 800 mm nearer passes in front
+//                 of the target, pausing over it: hidden completely for 21 frames (65-85)
+//   leave-return  target leaves on the right, is out of view for exactly 30 frames (48-77),
+//                 comes back from the left edge higher up and stays in view
+//   against-surface  a flat box (a bag) slides along a large textured board whose front is
+//                 40 mm behind the bag's back: little depth contrast; truth is the bag only
+//   held          target moving with a skin-coloured "hand" (a box in front of it) hiding
+//                 14-35 % of it
+//   flat-turn     a flat box (a book) turns from face-on to 78 degrees and back: image
+//                 width changes ~2.6x
+//   edge-holes    moving target whose depth drops out on a 3 px band along its silhouette
+//                 (edgeHoleProbability), on top of the projector shadow
 bool makeScene(const char* name, SceneSpec* out);
 int sceneCount();
 const char* sceneName(int i);  // nullptr when out of range
@@ -171,6 +207,8 @@ class SyntheticSource final : public FrameSource {
   void renderBackground(FrameSlot& out, uint32_t frameSeed);
   void renderObject(const Posed& p, FrameSlot& out, bool isTarget);
   void applyDepthModel(FrameSlot& out, uint32_t frameSeed);
+  void applyEdgeHoles(FrameSlot& out, uint32_t frameSeed);
+  float objectYaw(int i, float tS) const;
   Box projectObject(const Posed& p) const;
 
   SceneSpec _spec;
