@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The development set in one command: cuetrack-bench over every sequence of
 # ../shared/data/otb (13 real videos), ../shared/data/bobot (BoBoT C, E, H) and the
-# team's synthetic RGB-D scenes, CONFIG... (default: best 1.1) with 5 seeds each,
+# team's 15 synthetic RGB-D scenes (31 sequences), CONFIG... (default: best 1.1) with 5 seeds each,
 # beside OpenCV's CSRT, KCF and MedianFlow (deterministic: run once, cached).
 #
 #   scripts/devset.sh [CONFIG...]        e.g. scripts/devset.sh best best-nolost 1.1
@@ -23,7 +23,8 @@ OUT=${OUT:-build/devset}
 RUNS=${RUNS:-5}
 PEERS=${PEERS-opencv-csrt,opencv-kcf,opencv-medianflow}
 FRAMES=${FRAMES:-}
-SCENES=(moving twin-crossing occlusion untextured lighting approach box turn)
+SCENES=(moving twin-crossing occlusion untextured lighting approach box turn
+        fast lookalike leave-return against-surface held flat-turn edge-holes)
 configs=("$@")
 [ ${#configs[@]} -eq 0 ] && configs=(best 1.1)
 
