@@ -8,7 +8,6 @@
 namespace cuetrack {
 
 namespace {
-constexpr float kWindowGrow = 0.5f;  // window: the box grown by this x its size per side
 constexpr float kBandFrom = 0.25f;   // profile samples from the box's middle half
 constexpr float kBandTo = 0.75f;
 constexpr int kMaxSamples = 16;  // band rows (columns) read per column (row)
@@ -93,7 +92,7 @@ bool centralExtent(const uint8_t* occ, int n, int centre, float sidePx, int orig
 }  // namespace
 
 SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float nearMm,
-                                   float farMm) {
+                                   float farMm, float grow) {
   SilhouetteExtent out;
   if (depth.empty() || box.empty()) return out;
   const int nearI = nearMm < 1.f ? 1 : fmath::floorToInt(nearMm) + 1;
@@ -103,9 +102,9 @@ SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float
   if (farI < nearI) return out;
   const uint16_t lo = static_cast<uint16_t>(nearI), span = static_cast<uint16_t>(farI - nearI);
   const Span wx =
-      clipSpan(box.x - kWindowGrow * box.w, box.x + (1.f + kWindowGrow) * box.w, depth.width);
+      clipSpan(box.x - grow * box.w, box.x + (1.f + grow) * box.w, depth.width);
   const Span wy =
-      clipSpan(box.y - kWindowGrow * box.h, box.y + (1.f + kWindowGrow) * box.h, depth.height);
+      clipSpan(box.y - grow * box.h, box.y + (1.f + grow) * box.h, depth.height);
   const int nx = wx.hi - wx.lo, ny = wy.hi - wy.lo;
   if (nx < 3 || ny < 3) return out;
   const int cx = fmath::floorToInt(box.x + 0.5f * box.w) - wx.lo;

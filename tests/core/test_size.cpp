@@ -114,3 +114,19 @@ TEST_CASE("a silhouette that runs on to the window's edge is not a size", "[core
   REQUIRE(cut.hasHeight);
   REQUIRE(cut.heightPx == 90.f);
 }
+
+TEST_CASE("a slab over twice the window's width is measured only in the wide window",
+          "[core][size]") {
+  drawScene();
+  // A window 22 px wide on the 60 px slab (a box that fell behind a target turning back
+  // face-on): the default window (22 + 2 x 11 px) lies inside the slab, so its run reaches
+  // the window's edge and the width stays unmeasured; the wide one (22 + 2 x 33) holds it.
+  const Box narrow{119.f, 92.f, 22.f, 70.f};
+  const SilhouetteExtent e = measureSilhouette(view(), narrow, kSlabMm - 150.f, kSlabMm + 150.f);
+  CHECK_FALSE(e.hasWidth);
+  const SilhouetteExtent wide = measureSilhouette(view(), narrow, kSlabMm - 150.f,
+                                                  kSlabMm + 150.f, kSilhouetteWideGrow);
+  REQUIRE(wide.hasWidth);
+  CHECK(wide.widthPx == 60.f);
+  CHECK(wide.centreXPx == 130.f);
+}

@@ -16,15 +16,21 @@ struct SilhouetteExtent {
   bool hasHeight = false;
 };
 
+// The silhouette's window: the box grown by this x its size per side ...
+inline constexpr float kSilhouetteGrow = 0.5f;
+// ... or, for the width of a target that has grown wider than that window holds (a flat
+// target turning back face-on), by this.
+inline constexpr float kSilhouetteWideGrow = 1.5f;
+
 // The extent of the pixels whose depth lies in [nearMm, farMm] (0 = missing: never
-// counted) in a window of `box` grown by half its size per side. Width: the run of
+// counted) in a window of `box` grown by `grow` x its size per side. Width: the run of
 // columns containing the box's centre column in which most valid samples of the box's
 // middle rows lie in the slab, bridging gaps of a few px; height likewise with rows
 // sampled in the box's middle columns (the middle only: a floor or table the target
 // stands on is at its depth too). An axis stays unmeasured when its run reaches the
 // window's edge (the target goes on into something at its depth, or leaves the image).
 SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float nearMm,
-                                   float farMm);
+                                   float farMm, float grow = kSilhouetteGrow);
 
 // The upright cylinder whose projection is wPx x hPx with its front surface at
 // surfaceMm (the tracker's init rule): D = w s / (fx - w / 2), H = h (s + D / 2) / fy.
