@@ -11,7 +11,8 @@
 namespace cuetrack::bench {
 namespace {
 
-constexpr const char* kMagic = "cuetrack-peer-cache 1";
+// 2: the figures carry the share of frames the centre distance covers (centerPct).
+constexpr const char* kMagic = "cuetrack-peer-cache 2";
 
 struct Fnv64 {
   uint64_t h = 1469598103934665603ull;
@@ -102,9 +103,9 @@ bool loadPeerResult(const std::string& path, SequenceResult* out) {
   std::vector<double> boxes;
   const bool ok = std::fgets(line, sizeof line, f) &&
                   std::strncmp(line, kMagic, std::strlen(kMagic)) == 0 &&
-                  std::fscanf(f, "frames %d figures %lf %lf %lf %lf %lf %lf %lf %lf %lf", &g.frames,
-                              &g.overlap, &g.hit, &g.pascal, &g.centerPx, &g.centerMm, &g.centerZMm,
-                              &g.msMedian, &g.msMean, &g.allocs) == 10 &&
+                  std::fscanf(f, "frames %d figures %lf %lf %lf %lf %lf %lf %lf %lf %lf %lf",
+                              &g.frames, &g.overlap, &g.hit, &g.pascal, &g.centerPx, &g.centerPct,
+                              &g.centerMm, &g.centerZMm, &g.msMedian, &g.msMean, &g.allocs) == 11 &&
                   readVector(f, "runs", &g.runOverlap) &&
                   readArray(f, "success", g.success, kSuccessSteps, &n) && n == kSuccessSteps &&
                   readArray(f, "precision", g.precision, kPrecisionSteps, &n) &&
@@ -136,9 +137,10 @@ bool savePeerResult(const std::string& path, const SequenceResult& result, std::
     return false;
   }
   const Figures& g = result.figures;
-  std::fprintf(f, "%s\nframes %d figures %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
-               kMagic, g.frames, g.overlap, g.hit, g.pascal, g.centerPx, g.centerMm, g.centerZMm,
-               g.msMedian, g.msMean, g.allocs);
+  std::fprintf(f,
+               "%s\nframes %d figures %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
+               kMagic, g.frames, g.overlap, g.hit, g.pascal, g.centerPx, g.centerPct, g.centerMm,
+               g.centerZMm, g.msMedian, g.msMean, g.allocs);
   writeArray(f, "runs", g.runOverlap.data(), g.runOverlap.size());
   writeArray(f, "success", g.success, kSuccessSteps);
   writeArray(f, "precision", g.precision, kPrecisionSteps);

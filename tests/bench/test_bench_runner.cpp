@@ -509,6 +509,8 @@ TEST_CASE("peer cache: a result comes back as it was; another sequence, seed or 
   CHECK(back.ran);
   CHECK(back.figures.overlap == r.figures.overlap);  // bit for bit (%.17g)
   CHECK(back.figures.centerPx == r.figures.centerPx);
+  CHECK(r.figures.centerPct > 0.0);  // the share of frames centerPx covers, kept too
+  CHECK(back.figures.centerPct == r.figures.centerPct);
   CHECK(back.figures.auc == r.figures.auc);
   CHECK(back.figures.runOverlap == r.figures.runOverlap);
   CHECK(back.frameIndex == r.frameIndex);
