@@ -137,10 +137,10 @@ bool savePeerResult(const std::string& path, const SequenceResult& result, std::
     return false;
   }
   const Figures& g = result.figures;
-  std::fprintf(f,
-               "%s\nframes %d figures %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
-               kMagic, g.frames, g.overlap, g.hit, g.pascal, g.centerPx, g.centerPct, g.centerMm,
-               g.centerZMm, g.msMedian, g.msMean, g.allocs);
+  std::fprintf(
+      f, "%s\nframes %d figures %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
+      kMagic, g.frames, g.overlap, g.hit, g.pascal, g.centerPx, g.centerPct, g.centerMm,
+      g.centerZMm, g.msMedian, g.msMean, g.allocs);
   writeArray(f, "runs", g.runOverlap.data(), g.runOverlap.size());
   writeArray(f, "success", g.success, kSuccessSteps);
   writeArray(f, "precision", g.precision, kPrecisionSteps);

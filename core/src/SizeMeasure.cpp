@@ -8,7 +8,7 @@
 namespace cuetrack {
 
 namespace {
-constexpr float kBandFrom = 0.25f;   // profile samples from the box's middle half
+constexpr float kBandFrom = 0.25f;  // profile samples from the box's middle half
 constexpr float kBandTo = 0.75f;
 constexpr int kMaxSamples = 16;  // band rows (columns) read per column (row)
 constexpr int kMaxCells = kMaxImageWidth > kMaxImageHeight ? kMaxImageWidth : kMaxImageHeight;
@@ -101,10 +101,8 @@ SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float
   const int farI = fmath::floorToInt(farC);
   if (farI < nearI) return out;
   const uint16_t lo = static_cast<uint16_t>(nearI), span = static_cast<uint16_t>(farI - nearI);
-  const Span wx =
-      clipSpan(box.x - grow * box.w, box.x + (1.f + grow) * box.w, depth.width);
-  const Span wy =
-      clipSpan(box.y - grow * box.h, box.y + (1.f + grow) * box.h, depth.height);
+  const Span wx = clipSpan(box.x - grow * box.w, box.x + (1.f + grow) * box.w, depth.width);
+  const Span wy = clipSpan(box.y - grow * box.h, box.y + (1.f + grow) * box.h, depth.height);
   const int nx = wx.hi - wx.lo, ny = wy.hi - wy.lo;
   if (nx < 3 || ny < 3) return out;
   const int cx = fmath::floorToInt(box.x + 0.5f * box.w) - wx.lo;

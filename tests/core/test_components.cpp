@@ -1,6 +1,6 @@
 // The beyond-the-paper components the tracker wires, each on its own: the depth guard,
-// fast motion's jumps, the lost search, the peak contrast, and the small helpers (the depth median that places a new
-// 3D track, the scan order, the small target's padding).
+// fast motion's jumps, the lost search, the peak contrast, and the small helpers (the depth median
+// that places a new 3D track, the scan order, the small target's padding).
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -124,8 +124,8 @@ TEST_CASE("a slab over twice the window's width is measured only in the wide win
   const Box narrow{119.f, 92.f, 22.f, 70.f};
   const SilhouetteExtent e = measureSilhouette(view(), narrow, kSlabMm - 150.f, kSlabMm + 150.f);
   CHECK_FALSE(e.hasWidth);
-  const SilhouetteExtent wide = measureSilhouette(view(), narrow, kSlabMm - 150.f,
-                                                  kSlabMm + 150.f, kSilhouetteWideGrow);
+  const SilhouetteExtent wide =
+      measureSilhouette(view(), narrow, kSlabMm - 150.f, kSlabMm + 150.f, kSilhouetteWideGrow);
   REQUIRE(wide.hasWidth);
   CHECK(wide.widthPx == 60.f);
   CHECK(wide.centreXPx == 130.f);
