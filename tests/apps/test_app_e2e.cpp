@@ -16,6 +16,7 @@
 
 #include "Process.hpp"
 #include "Skip.hpp"
+#include "TempDir.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
@@ -90,19 +91,18 @@ bool isTrack(const ctp_message_t& m, uint8_t state) {
   return m.type == CTP_MSG_TRACK && m.u.track.state == state;
 }
 
-struct TempDir {
-  char path[64];
-  TempDir() {
-    std::snprintf(path, sizeof path, "/tmp/cuetrack-e2e-XXXXXX");
-    REQUIRE(mkdtemp(path) != nullptr);
+// Heartbeats numbered from..to as the device sends them, after a frame delimiter.
+std::vector<uint8_t> heartbeats(uint32_t from, uint32_t to) {
+  std::vector<uint8_t> wire{0};
+  for (uint32_t s = from; s <= to; ++s) {
+    ctp_heartbeat_t h{};
+    h.seq = s;
+    uint8_t w[CTP_MAX_WIRE];
+    const size_t n = ctp_encode_heartbeat(&h, w, sizeof w);
+    wire.insert(wire.end(), w, w + n);
   }
-  ~TempDir() {
-    char cmd[128];
-    std::snprintf(cmd, sizeof cmd, "rm -rf %s", path);
-    if (std::system(cmd) != 0) std::fprintf(stderr, "could not remove %s\n", path);
-  }
-  std::string file(const char* name) const { return std::string(path) + "/" + name; }
-};
+  return wire;
+}
 
 bool haveSocat() {
   return fileExists("/usr/bin/socat");
@@ -398,7 +398,7 @@ TEST_CASE("a recording whose frames change size, or whose ground truth is refuse
   const std::string synth = std::string(CUETRACK_SYNTH_BIN) + " --scene moving --frames 8 ";
   // Frame 5 of rec replaced by the 320x240 one (same file names: same timestamps).
   const std::string make = synth + "--out " + rec + " >/dev/null && " + synth +
-                           "--size 320x240 --out " + small + " >/dev/null && cd " + tmp.path +
+                           "--size 320x240 --out " + small + " >/dev/null && cd " + tmp.path() +
                            " && for p in r d; do f=$(grep \"^$p-\" rec/INDEX.txt | sed -n 6p)"
                            " && cp small/$f rec/$f || exit 1; done && cd - >/dev/null && " +
                            synth + "--out " + gt +
@@ -445,8 +445,7 @@ TEST_CASE("cuetrack-listen exits 1 naming the port when it goes away") {
 
 TEST_CASE("cuetrack-listen --reconnect waits for the port and reports the seq gap across it") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -457,18 +456,10 @@ TEST_CASE("cuetrack-listen --reconnect waits for the port and reports the seq ga
   REQUIRE(listener.start(largv, listenOut.c_str(), listenErr.c_str()));
   REQUIRE(waitFor([&] { return slurp(listenErr).find("listening") != std::string::npos; }, 10000));
   // The device: heartbeats seq 0..2, then the line goes, then seq 10.
-  auto heartbeat = [](uint32_t seq, std::vector<uint8_t>* wire) {
-    ctp_heartbeat_t h{};
-    h.seq = seq;
-    uint8_t w[CTP_MAX_WIRE];
-    const size_t n = ctp_encode_heartbeat(&h, w, sizeof w);
-    wire->insert(wire->end(), w, w + n);
-  };
   {
     HostPort device;
     REQUIRE(device.port.open(pty.a(), 115200));
-    std::vector<uint8_t> wire{0};
-    for (uint32_t s = 0; s < 3; ++s) heartbeat(s, &wire);
+    const std::vector<uint8_t> wire = heartbeats(0, 2);
     device.sendRaw(wire.data(), wire.size());
     REQUIRE(waitFor([&] { return lines(slurp(listenOut)).size() >= 3; }, 10000));
   }
@@ -482,8 +473,7 @@ TEST_CASE("cuetrack-listen --reconnect waits for the port and reports the seq ga
   {
     HostPort device;
     REQUIRE(device.port.open(pty.a(), 115200));
-    std::vector<uint8_t> wire{0};
-    heartbeat(10, &wire);
+    const std::vector<uint8_t> wire = heartbeats(10, 10);
     device.sendRaw(wire.data(), wire.size());
     REQUIRE(waitFor([&] { return slurp(listenErr).find("seq 10 after 2") != std::string::npos; },
                     10000));
@@ -500,8 +490,7 @@ TEST_CASE("cuetrack-listen --reconnect waits for the port and reports the seq ga
 
 TEST_CASE("a restarted listener with --state reports the messages lost while it was away") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -510,14 +499,7 @@ TEST_CASE("a restarted listener with --state reports the messages lost while it 
   HostPort device;
   REQUIRE(device.port.open(pty.a(), 115200));
   auto send = [&](uint32_t from, uint32_t to) {
-    std::vector<uint8_t> wire{0};
-    for (uint32_t s = from; s <= to; ++s) {
-      ctp_heartbeat_t h{};
-      h.seq = s;
-      uint8_t w[CTP_MAX_WIRE];
-      const size_t n = ctp_encode_heartbeat(&h, w, sizeof w);
-      wire.insert(wire.end(), w, w + n);
-    }
+    const std::vector<uint8_t> wire = heartbeats(from, to);
     device.sendRaw(wire.data(), wire.size());
   };
   auto runListener = [&](const std::string& errPath, uint32_t from, uint32_t to) {
@@ -546,8 +528,7 @@ TEST_CASE("a restarted listener with --state reports the messages lost while it 
 
 TEST_CASE("two listeners on one port: the second is refused, naming the first's PID") {
   if (!haveSocat()) {
-    WARN("socat not installed: skipped");
-    return;
+    CUETRACK_SKIP("socat not installed");
   }
   TempDir tmp;
   PtyPair pty;
@@ -611,27 +592,7 @@ TEST_CASE("a damaged video frame stops cuetrack naming it, or is skipped and cou
     REQUIRE(synth.wait(kAppTimeoutMs, &status));
     if (status != 0) CUETRACK_SKIP("this build writes no .avi (no OpenCV)");
   }
-  // Flip bits inside the JPEG data of frame 7 (the 8th "00dc" chunk of the movi list).
-  static char buf[8 << 20];
-  FILE* f = std::fopen(avi.c_str(), "rb");
-  REQUIRE(f != nullptr);
-  const size_t n = std::fread(buf, 1, sizeof buf, f);
-  std::fclose(f);
-  std::string data(buf, n);
-  size_t at = data.find("movi");
-  REQUIRE(at != std::string::npos);
-  for (int k = 0; k <= 7; ++k) {
-    at = data.find("00dc", at + 4);
-    REQUIRE(at != std::string::npos);
-  }
-  uint32_t size = 0;
-  std::memcpy(&size, data.data() + at + 4, 4);
-  REQUIRE(size > 2000);
-  for (uint32_t i = size / 2; i < size / 2 + 600; i += 7) data[at + 8 + i] ^= 0x5a;
-  f = std::fopen(avi.c_str(), "wb");
-  REQUIRE(f != nullptr);
-  REQUIRE(std::fwrite(data.data(), 1, data.size(), f) == data.size());
-  std::fclose(f);
+  damageAviFrame(avi, 7);
 
   const std::string err = tmp.file("err");
   ChildProcess strict;

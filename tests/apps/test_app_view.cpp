@@ -19,6 +19,7 @@
 
 #include "Process.hpp"
 #include "Skip.hpp"
+#include "TempDir.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 
 using namespace cuetrack;
@@ -31,20 +32,6 @@ constexpr int kAppTimeoutMs = 120000;  // generous: 2 cores shared by many build
 bool contains(const std::string& s, const char* part) {
   return s.find(part) != std::string::npos;
 }
-
-struct TempDir {
-  char path[64];
-  TempDir() {
-    std::snprintf(path, sizeof path, "/tmp/cuetrack-view-XXXXXX");
-    REQUIRE(mkdtemp(path) != nullptr);
-  }
-  ~TempDir() {
-    char cmd[128];
-    std::snprintf(cmd, sizeof cmd, "rm -rf %s", path);
-    if (std::system(cmd) != 0) std::fprintf(stderr, "could not remove %s\n", path);
-  }
-  std::string file(const char* name) const { return std::string(path) + "/" + name; }
-};
 
 // Runs argv to completion; its exit status (-1 when it did not end in time).
 int run(std::vector<const char*> argv, const std::string& out, const std::string& err,

@@ -176,15 +176,12 @@ TEST_CASE("best in 3D keeps a target seen at 7.5 fps", "[core][e2e]") {
 }
 
 TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2e]") {
-  if (emulated()) {
-    WARN("twin-crossing skipped under emulation (150 frames at 640x480 take too long in qemu)");
-    return;
-  }
   // Over scene and tracker seeds 1-10. The paper's 2.1 has no guard against a cloud split
   // between two places: in about one seed of twenty (seed 19 of 1-20 before the weak
   // classifiers' density floor, seed 5 after) the estimate falls between target and twin
   // and drifts off; best (lost detection) keeps every seed.
-  const uint64_t seeds = sanitized() ? 2 : 10;
+  // Under qemu one seed, under the sanitizers two (a 150-frame run takes seconds there).
+  const uint64_t seeds = emulated() ? 1 : sanitized() ? 2 : 10;
   for (Preset p : {Preset::Test2_1, Preset::Best}) {
     int kept = 0;
     for (uint64_t seed = 1; seed <= seeds; ++seed) {
@@ -201,15 +198,13 @@ TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2
 }
 
 TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core][e2e]") {
-  if (emulated()) {
-    WARN("occlusion skipped under emulation (150 frames at 640x480 take too long in qemu)");
-    return;
-  }
   // The box hides the target completely from about frame 67 to 90; from frame 96 on it
   // is in full view again. Without re-acquisition the tracker never finds it again.
+  // Under qemu one seed each side.
   constexpr int kAfter = 100;
+  const uint64_t seeds = emulated() ? 1 : 5;
   float sum = 0.f;
-  for (uint64_t seed = 1; seed <= 5; ++seed) {
+  for (uint64_t seed = 1; seed <= seeds; ++seed) {
     const Stats s = runScene("occlusion", presetConfig(Preset::Best), seed, 150, kAfter);
     const float after = static_cast<float>(s.hitsAfter) / static_cast<float>(s.framesAfter);
     INFO("seed " << seed << ": hit rate " << s.hitRate() << ", after frame " << kAfter << " "
@@ -218,12 +213,14 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
     CHECK(s.allocations == 0);
     sum += after;
   }
-  INFO("mean hit rate after frame " << kAfter << ": " << sum / 5.f);
-  CHECK(sum / 5.f >= 0.8f);
+  INFO("mean hit rate after frame " << kAfter << ": " << sum / static_cast<float>(seeds));
+  // One seed alone varies more than the mean of five (seed 1: 0.68).
+  CHECK(sum / static_cast<float>(seeds) >= (seeds >= 5 ? 0.8f : 0.5f));
   // Control: the same seeds without lost detection (and so without re-acquisition).
   TrackerConfig noLost = presetConfig(Preset::Best);
   noLost.lostDetection = false;
-  const uint64_t controlSeeds = sanitized() ? 2 : 5;  // 0.0 on each of 5 (ASan: 10 s a run)
+  // 0.0 on each of 5 (ASan: 10 s a run)
+  const uint64_t controlSeeds = emulated() ? 1 : sanitized() ? 2 : 5;
   float sumNoLost = 0.f;
   for (uint64_t seed = 1; seed <= controlSeeds; ++seed) {
     const Stats n = runScene("occlusion", noLost, seed, 150, kAfter);
@@ -278,10 +275,6 @@ TEST_CASE("best reports a first box on a plain wall lost within a few frames", "
 }
 
 TEST_CASE("best's cylinder follows a target whose width changes as it turns", "[core][e2e]") {
-  if (emulated()) {
-    WARN("turn skipped under emulation (150 frames at 640x480 take too long in qemu)");
-    return;
-  }
   // A box yawing 90 degrees: 107 px wide side-on, 38 px end-on at frame 149. From frame
   // 100 (yaw 60 degrees, width 0.7x) a cylinder of the first frame's size is too wide
   // (scene and tracker seed 3: fixed size ~0.44 mean overlap there, measured ~0.87).

@@ -305,25 +305,6 @@ TEST_CASE("BoBoT video reader: own video, unreadable video", "[opencv][bobot]") 
   }
 }
 
-namespace {
-// Flips bits in the middle of the JPEG data of video frame `frame` (the frame-th "00dc"
-// chunk of the AVI's movi list): the container stays whole, the picture is damaged.
-void damageAviFrame(const std::string& avi, int frame) {
-  std::string data = test::readText(avi);
-  size_t at = data.find("movi");
-  REQUIRE(at != std::string::npos);
-  for (int k = 0; k <= frame; ++k) {
-    at = data.find("00dc", at + 4);
-    REQUIRE(at != std::string::npos);
-  }
-  uint32_t size = 0;
-  std::memcpy(&size, data.data() + at + 4, 4);
-  REQUIRE(size > 2000);
-  for (uint32_t i = size / 2; i < size / 2 + 600; i += 7) data[at + 8 + i] ^= 0x5a;
-  test::writeText(avi, data);
-}
-}  // namespace
-
 TEST_CASE("BoBoT video: a damaged frame is an error naming it, or skipped and counted",
           "[opencv][bobot][bad]") {
   TempDir tmp;
@@ -346,7 +327,7 @@ TEST_CASE("BoBoT video: a damaged frame is an error naming it, or skipped and co
     CHECK(n == 8);
     CHECK(r.skippedFrames() == 0);
   }
-  damageAviFrame(avi, 5);
+  test::damageAviFrame(avi, 5);
   BobotVideoReader r;
   REQUIRE(r.open(avi.c_str()));
   int n = 0;
