@@ -140,6 +140,25 @@ SceneObject texturedCylinder() {
   return o;
 }
 
+// An upright box halfWidthMm either side in x, halfDepthMm in z, heightMm tall.
+SceneObject texturedBox(float halfWidthMm, float halfDepthMm, float heightMm,
+                        const TextureSpec& texture) {
+  SceneObject o;
+  o.shape = ShapeKind::Box;
+  o.radiusMm = halfWidthMm;
+  o.halfDepthMm = halfDepthMm;
+  o.heightMm = heightMm;
+  o.texture = texture;
+  return o;
+}
+
+// Where a motion starts, camera coordinates [mm].
+void startAt(MotionSpec* m, float xMm, float yMm, float zMm) {
+  m->startMm[0] = xMm;
+  m->startMm[1] = yMm;
+  m->startMm[2] = zMm;
+}
+
 }  // namespace
 
 int sceneCount() {
@@ -161,9 +180,7 @@ bool makeScene(const char* name, SceneSpec* out) {
   SceneObject t = texturedCylinder();
   const std::string_view n(kSceneNames[which]);
   if (n == "moving" || n == "lighting") {
-    t.motion.startMm[0] = -100.f;
-    t.motion.startMm[1] = 200.f;
-    t.motion.startMm[2] = 2200.f;
+    startAt(&t.motion, -100.f, 200.f, 2200.f);
     t.motion.amplitudeMm[0] = 600.f;
     t.motion.periodS[0] = 4.f;
     t.motion.amplitudeMm[1] = 80.f;
@@ -181,34 +198,22 @@ bool makeScene(const char* name, SceneSpec* out) {
     }
   } else if (n == "twin-crossing") {
     // Target left -> right at 1.8 m; its twin right -> left at 2.5 m; both at x = 0 at t = 2.5 s.
-    t.motion.startMm[0] = -900.f;
-    t.motion.startMm[1] = 200.f;
-    t.motion.startMm[2] = 1800.f;
+    startAt(&t.motion, -900.f, 200.f, 1800.f);
     t.motion.velocityMmPerS[0] = 360.f;
     SceneObject twin = t;
-    twin.motion.startMm[0] = 1100.f;
-    twin.motion.startMm[1] = 250.f;
-    twin.motion.startMm[2] = 2500.f;
+    startAt(&twin.motion, 1100.f, 250.f, 2500.f);
     twin.motion.velocityMmPerS[0] = -440.f;
     s.objects[0] = t;
     s.objects[1] = twin;
     s.numObjects = 2;
   } else if (n == "occlusion") {
     // A wide striped box at 1.2 m sweeps across and hides the target completely mid-way.
-    t.motion.startMm[0] = -200.f;
-    t.motion.startMm[1] = 200.f;
-    t.motion.startMm[2] = 2200.f;
+    startAt(&t.motion, -200.f, 200.f, 2200.f);
     t.motion.velocityMmPerS[0] = 80.f;
-    SceneObject occ;
-    occ.shape = ShapeKind::Box;
-    occ.radiusMm = 220.f;
-    occ.halfDepthMm = 50.f;
-    occ.heightMm = 600.f;
-    occ.motion.startMm[0] = -1300.f;
-    occ.motion.startMm[1] = 110.f;
-    occ.motion.startMm[2] = 1200.f;
+    SceneObject occ = texturedBox(220.f, 50.f, 600.f,
+                                  {TextureKind::Stripes, {60, 160, 60}, {230, 230, 80}, 7, 6.f});
+    startAt(&occ.motion, -1300.f, 110.f, 1200.f);
     occ.motion.velocityMmPerS[0] = 500.f;
-    occ.texture = {TextureKind::Stripes, {60, 160, 60}, {230, 230, 80}, 7, 6.f};
     s.objects[0] = t;
     s.objects[1] = occ;
     s.numObjects = 2;
@@ -219,9 +224,7 @@ bool makeScene(const char* name, SceneSpec* out) {
     s.wallLeftMm = -20000.f;  // no opening either: one grey everywhere
     t.texture = {TextureKind::Flat, grey, grey, 1, 5.f};
     t.shaded = false;
-    t.motion.startMm[0] = -100.f;
-    t.motion.startMm[1] = 200.f;
-    t.motion.startMm[2] = 2000.f;
+    startAt(&t.motion, -100.f, 200.f, 2000.f);
     t.motion.amplitudeMm[0] = 500.f;
     t.motion.periodS[0] = 4.f;
     t.motion.amplitudeMm[2] = 400.f;
@@ -231,9 +234,7 @@ bool makeScene(const char* name, SceneSpec* out) {
   } else if (n == "approach") {
     // 4.5 m -> 0.8 m in 5 s: the box grows ~5.6x.
     s.wallDepthMm = 5500.f;
-    t.motion.startMm[0] = 150.f;
-    t.motion.startMm[1] = 150.f;
-    t.motion.startMm[2] = 4500.f;
+    startAt(&t.motion, 150.f, 150.f, 4500.f);
     t.motion.velocityMmPerS[2] = -740.f;
     t.motion.amplitudeMm[0] = 120.f;
     t.motion.periodS[0] = 2.5f;
@@ -243,16 +244,10 @@ bool makeScene(const char* name, SceneSpec* out) {
     // The paper's Tank case: initialised side-on, then turning to face the camera. A
     // 400 x 120 x 200 mm box at 2 m yaws 90 degrees in 5 s (image width ~105 px -> ~35 px)
     // while drifting 300 mm to the right.
-    SceneObject b;
-    b.shape = ShapeKind::Box;
-    b.radiusMm = 200.f;
-    b.halfDepthMm = 60.f;
-    b.heightMm = 200.f;
+    SceneObject b = texturedBox(200.f, 60.f, 200.f,
+                                {TextureKind::Patches, {60, 170, 90}, {150, 40, 120}, 303, 4.f});
     b.yawRateRadPerS = kPi / 2 / 5.f;
-    b.texture = {TextureKind::Patches, {60, 170, 90}, {150, 40, 120}, 303, 4.f};
-    b.motion.startMm[0] = -150.f;
-    b.motion.startMm[1] = 250.f;
-    b.motion.startMm[2] = 2000.f;
+    startAt(&b.motion, -150.f, 250.f, 2000.f);
     b.motion.velocityMmPerS[0] = 60.f;
     s.objects[0] = b;
     s.numObjects = 1;
@@ -260,9 +255,7 @@ bool makeScene(const char* name, SceneSpec* out) {
     // 40 px a frame sideways at 2 m (fx 518: 4633 mm/s), turning every 12 frames at
     // 240 px either side of the image centre (frames 6, 18, 30, ...): every frame's step is
     // a full 40 px; a slow vertical sway besides.
-    t.motion.startMm[0] = 0.f;
-    t.motion.startMm[1] = 150.f;
-    t.motion.startMm[2] = 2000.f;
+    startAt(&t.motion, 0.f, 150.f, 2000.f);
     t.motion.triangleAmplitudeMm[0] = 240.f * 2000.f / 518.f;
     t.motion.trianglePeriodS[0] = 0.8f;
     t.motion.trianglePhase[0] = 0.25f;  // at the centre, moving right
@@ -274,17 +267,13 @@ bool makeScene(const char* name, SceneSpec* out) {
     // The target drifts left at 2.4 m; a same-textured cylinder (radius 65 mm, 220 mm tall:
     // ~1.2x the target's image size) at 1.6 m sweeps left -> right, its speed falling to 0
     // at t = 2.5 s, right over the target (x(t) = -1000 + 400 t + 318.3 sin(2 pi t / 5)).
-    t.motion.startMm[0] = 100.f;
-    t.motion.startMm[1] = 200.f;
-    t.motion.startMm[2] = 2400.f;
+    startAt(&t.motion, 100.f, 200.f, 2400.f);
     t.motion.velocityMmPerS[0] = -40.f;
     SceneObject look = t;
     look.radiusMm = 65.f;
     look.heightMm = 220.f;
     look.motion = MotionSpec{};
-    look.motion.startMm[0] = -1000.f;
-    look.motion.startMm[1] = 136.f;
-    look.motion.startMm[2] = 1600.f;
+    startAt(&look.motion, -1000.f, 136.f, 1600.f);
     look.motion.velocityMmPerS[0] = 400.f;
     look.motion.amplitudeMm[0] = 400.f * 5.f / (2.f * kPi);
     look.motion.periodS[0] = 5.f;
@@ -294,9 +283,7 @@ bool makeScene(const char* name, SceneSpec* out) {
   } else if (n == "leave-return") {
     // Out on the right at 700 mm/s; while out of view (frames kLeaveFirst..+29) it jumps to
     // just inside the left edge, 100 mm higher, and moves on right at 250 mm/s.
-    t.motion.startMm[0] = 200.f;
-    t.motion.startMm[1] = 200.f;
-    t.motion.startMm[2] = 2000.f;
+    startAt(&t.motion, 200.f, 200.f, 2000.f);
     t.motion.velocityMmPerS[0] = 700.f;
     t.motion.jumpAtS = kLeaveReturnJumpFrame / 30.f;
     t.motion.jumpMm[0] = kLeaveReturnJumpXMm;
@@ -308,25 +295,13 @@ bool makeScene(const char* name, SceneSpec* out) {
     // A bag (200 x 80 x 260 mm box) at 1.8 m slides right at 120 mm/s along a board
     // (1400 x 60 x 800 mm) drifting right at 60 mm/s, whose front is 40 mm behind the bag's
     // back: the bag stands 120 mm out of its background in depth.
-    SceneObject bag;
-    bag.shape = ShapeKind::Box;
-    bag.radiusMm = 100.f;
-    bag.halfDepthMm = 40.f;
-    bag.heightMm = 260.f;
-    bag.texture = {TextureKind::Patches, {40, 120, 180}, {220, 200, 170}, 405, 4.f};
-    bag.motion.startMm[0] = -300.f;
-    bag.motion.startMm[1] = 250.f;
-    bag.motion.startMm[2] = 1800.f;
+    SceneObject bag = texturedBox(
+        100.f, 40.f, 260.f, {TextureKind::Patches, {40, 120, 180}, {220, 200, 170}, 405, 4.f});
+    startAt(&bag.motion, -300.f, 250.f, 1800.f);
     bag.motion.velocityMmPerS[0] = 120.f;
-    SceneObject board;
-    board.shape = ShapeKind::Box;
-    board.radiusMm = 700.f;
-    board.halfDepthMm = 30.f;
-    board.heightMm = 800.f;
-    board.texture = {TextureKind::Patches, {120, 90, 60}, {70, 60, 50}, 404, 8.f};
-    board.motion.startMm[0] = -150.f;
-    board.motion.startMm[1] = 200.f;
-    board.motion.startMm[2] = 1800.f + 40.f + 40.f + 30.f;
+    SceneObject board = texturedBox(700.f, 30.f, 800.f,
+                                    {TextureKind::Patches, {120, 90, 60}, {70, 60, 50}, 404, 8.f});
+    startAt(&board.motion, -150.f, 200.f, 1800.f + 40.f + 40.f + 30.f);
     board.motion.velocityMmPerS[0] = 60.f;
     s.objects[0] = bag;
     s.objects[1] = board;
@@ -335,9 +310,7 @@ bool makeScene(const char* name, SceneSpec* out) {
     // The target carried around (x, y and z sways), a "hand" (140 x 50 x 120 mm box, skin
     // tones in finger-wide stripes) 115 mm in front of its centre over its lower right
     // half, sliding +-20 mm across it.
-    t.motion.startMm[0] = -100.f;
-    t.motion.startMm[1] = 200.f;
-    t.motion.startMm[2] = 2000.f;
+    startAt(&t.motion, -100.f, 200.f, 2000.f);
     t.motion.amplitudeMm[0] = 450.f;
     t.motion.periodS[0] = 5.f;
     t.motion.amplitudeMm[1] = 60.f;
@@ -345,12 +318,8 @@ bool makeScene(const char* name, SceneSpec* out) {
     t.motion.amplitudeMm[2] = 300.f;
     t.motion.periodS[2] = 6.f;
     t.motion.phaseRad[2] = 1.f;
-    SceneObject hand;
-    hand.shape = ShapeKind::Box;
-    hand.radiusMm = 70.f;
-    hand.halfDepthMm = 25.f;
-    hand.heightMm = 120.f;
-    hand.texture = {TextureKind::Stripes, {222, 170, 138}, {196, 142, 112}, 1, 2.5f};
+    SceneObject hand = texturedBox(
+        70.f, 25.f, 120.f, {TextureKind::Stripes, {222, 170, 138}, {196, 142, 112}, 1, 2.5f});
     hand.motion = t.motion;
     hand.motion.startMm[0] += 76.f;
     hand.motion.startMm[1] += 40.f;
@@ -363,27 +332,19 @@ bool makeScene(const char* name, SceneSpec* out) {
   } else if (n == "flat-turn") {
     // A 260 x 50 x 320 mm box (a book, a flat bag) at 2 m yaws 0.68 (1 - cos(2 pi t / 5))
     // rad: face-on -> 78 degrees at t = 2.5 s -> face-on, drifting right.
-    SceneObject b;
-    b.shape = ShapeKind::Box;
-    b.radiusMm = 130.f;
-    b.halfDepthMm = 25.f;
-    b.heightMm = 320.f;
+    SceneObject b = texturedBox(130.f, 25.f, 320.f,
+                                {TextureKind::Patches, {30, 80, 160}, {230, 220, 200}, 606, 4.f});
     b.yawRad = 0.68f;
     b.yawAmplitudeRad = 0.68f;
     b.yawPeriodS = 5.f;
     b.yawPhaseRad = -kPi / 2;
-    b.texture = {TextureKind::Patches, {30, 80, 160}, {230, 220, 200}, 606, 4.f};
-    b.motion.startMm[0] = -200.f;
-    b.motion.startMm[1] = 200.f;
-    b.motion.startMm[2] = 2000.f;
+    startAt(&b.motion, -200.f, 200.f, 2000.f);
     b.motion.velocityMmPerS[0] = 80.f;
     s.objects[0] = b;
     s.numObjects = 1;
   } else if (n == "edge-holes") {
     // Moving target (x and z sways) whose depth drops out along its silhouette.
-    t.motion.startMm[0] = 0.f;
-    t.motion.startMm[1] = 200.f;
-    t.motion.startMm[2] = 2000.f;
+    startAt(&t.motion, 0.f, 200.f, 2000.f);
     t.motion.amplitudeMm[0] = 500.f;
     t.motion.periodS[0] = 4.f;
     t.motion.amplitudeMm[2] = 300.f;
@@ -393,15 +354,9 @@ bool makeScene(const char* name, SceneSpec* out) {
     s.edgeHoleProbability = 0.6f;
     s.edgeHoleBandPx = 3;
   } else {  // box
-    SceneObject b;
-    b.shape = ShapeKind::Box;
-    b.radiusMm = 90.f;
-    b.halfDepthMm = 60.f;
-    b.heightMm = 160.f;
-    b.texture = {TextureKind::Patches, {230, 200, 40}, {40, 40, 40}, 202, 4.f};
-    b.motion.startMm[0] = 0.f;
-    b.motion.startMm[1] = 250.f;
-    b.motion.startMm[2] = 2000.f;
+    SceneObject b = texturedBox(90.f, 60.f, 160.f,
+                                {TextureKind::Patches, {230, 200, 40}, {40, 40, 40}, 202, 4.f});
+    startAt(&b.motion, 0.f, 250.f, 2000.f);
     b.motion.amplitudeMm[0] = 700.f;
     b.motion.periodS[0] = 5.f;
     b.motion.amplitudeMm[2] = 500.f;
