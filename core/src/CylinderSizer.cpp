@@ -44,8 +44,10 @@ bool measureTarget(const Frame& frame, const IntegralChannels& channels, const B
   if (!e->hasWidth) {
     // The run may go on past the window: a target that has grown wider than the window
     // holds (a flat one turning back face-on) would otherwise never be measured again.
-    const SilhouetteExtent wide = measureSilhouette(frame.depthMm, b, *surfaceMm - halfSlabMm,
-                                                    *surfaceMm + halfSlabMm, kSilhouetteWideGrow);
+    // The width only: the height was measured (or not) in the first window.
+    const SilhouetteExtent wide =
+        measureSilhouette(frame.depthMm, b, *surfaceMm - halfSlabMm, *surfaceMm + halfSlabMm,
+                          kSilhouetteWideGrow, SilhouetteAxes::WidthOnly);
     if (wide.hasWidth) {
       e->hasWidth = true;
       e->widthPx = wide.widthPx;

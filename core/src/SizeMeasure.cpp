@@ -92,7 +92,7 @@ bool centralExtent(const uint8_t* occ, int n, int centre, float sidePx, int orig
 }  // namespace
 
 SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float nearMm,
-                                   float farMm, float grow) {
+                                   float farMm, float grow, SilhouetteAxes axes) {
   SilhouetteExtent out;
   if (depth.empty() || box.empty()) return out;
   const int nearI = nearMm < 1.f ? 1 : fmath::floorToInt(nearMm) + 1;
@@ -129,7 +129,7 @@ SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float
   }
   // Height: rows of the window, sampled on the box's middle columns.
   const Span bx = clipSpan(box.x + kBandFrom * box.w, box.x + kBandTo * box.w, depth.width);
-  if (bx.hi > bx.lo) {
+  if (axes == SilhouetteAxes::Both && bx.hi > bx.lo) {
     const int m = bx.hi - bx.lo < kMaxSamples ? bx.hi - bx.lo : kMaxSamples;
     int cols[kMaxSamples];
     for (int s = 0; s < m; ++s) cols[s] = sampleAt(bx, s, m);

@@ -282,23 +282,23 @@ Tracker::Estimate Tracker::estimate() {
 }
 
 bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi) {
-  bool occluded = false;
+  bool miss = false;  // whatever the confidence: not learnt, and a miss for the detector
   if (_config.lostDetection) {
     // 3D: the estimate jumped well in front of or behind where the target was last
     // confirmed: the depth correction has put the cloud on something passing in front,
     // or on the background (either can look enough like the target to keep the
     // confidence above the lost threshold). Counts as a miss, and is not learnt.
-    occluded = _is3d && !wasLost && !_lost.onProbation() && _depthGuard.jumped(e.particle.p[2]);
     // An estimate that does not stand out from the windows beside it (a plain wall, a
     // cloud drifted onto background) is a miss too, and not learnt.
-    if (PeakContrast::flat(e.contrast)) occluded = true;
-    _state = _lost.step(_state, occluded ? 0.f : e.confidence);
+    miss = (_is3d && !wasLost && !_lost.onProbation() && _depthGuard.jumped(e.particle.p[2])) ||
+           PeakContrast::flat(e.contrast);
+    _state = _lost.step(_state, miss ? 0.f : e.confidence);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
   }
   // Just found again (on probation): the estimate may be off the target's centre, or
   // on a look-alike; learn only once the detector has confirmed it.
   bool learned = false;
-  if (!e.box.empty() && !occluded && !_lost.onProbation() &&
+  if (!e.box.empty() && !miss && !_lost.onProbation() &&
       _gate.open(e.confidence, e.concentration, _state)) {
     // Only on frames fit to learn: the estimate is then on the target.
     if (_is3d && _config.adaptCylinderSize && frame.hasDepth() &&

@@ -129,4 +129,13 @@ TEST_CASE("a slab over twice the window's width is measured only in the wide win
   REQUIRE(wide.hasWidth);
   CHECK(wide.widthPx == 60.f);
   CHECK(wide.centreXPx == 130.f);
+  CHECK(wide.hasHeight);
+  // The width alone: the same width, no height read.
+  const SilhouetteExtent widthOnly =
+      measureSilhouette(view(), narrow, kSlabMm - 150.f, kSlabMm + 150.f, kSilhouetteWideGrow,
+                        SilhouetteAxes::WidthOnly);
+  CHECK(widthOnly.hasWidth);
+  CHECK(widthOnly.widthPx == 60.f);
+  CHECK(widthOnly.centreXPx == 130.f);
+  CHECK_FALSE(widthOnly.hasHeight);
 }

@@ -3,6 +3,8 @@
 // target whose width changes as it turns. A few thousand pixel reads, no tables.
 #pragma once
 
+#include <cstdint>
+
 #include "cuetrack/core/Frame.hpp"
 #include "cuetrack/core/Geometry.hpp"
 
@@ -22,6 +24,8 @@ inline constexpr float kSilhouetteGrow = 0.5f;
 // target turning back face-on), by this.
 inline constexpr float kSilhouetteWideGrow = 1.5f;
 
+enum class SilhouetteAxes : uint8_t { Both, WidthOnly };
+
 // The extent of the pixels whose depth lies in [nearMm, farMm] (0 = missing: never
 // counted) in a window of `box` grown by `grow` x its size per side. Width: the run of
 // columns containing the box's centre column in which most valid samples of the box's
@@ -30,7 +34,8 @@ inline constexpr float kSilhouetteWideGrow = 1.5f;
 // stands on is at its depth too). An axis stays unmeasured when its run reaches the
 // window's edge (the target goes on into something at its depth, or leaves the image).
 SilhouetteExtent measureSilhouette(const DepthView& depth, const Box& box, float nearMm,
-                                   float farMm, float grow = kSilhouetteGrow);
+                                   float farMm, float grow = kSilhouetteGrow,
+                                   SilhouetteAxes axes = SilhouetteAxes::Both);
 
 // The upright cylinder whose projection is wPx x hPx with its front surface at
 // surfaceMm (the tracker's init rule): D = w s / (fx - w / 2), H = h (s + D / 2) / fy.
