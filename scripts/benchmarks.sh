@@ -29,8 +29,6 @@ DOC=docs/benchmarks.md
 IMG=docs/img
 OUT=$BUILD/benchmarks-out
 CACHE=$BUILD/devset/peer-cache  # shared with scripts/devset.sh
-SCENES=(moving twin-crossing occlusion untextured lighting approach box turn
-        fast lookalike leave-return against-surface held flat-turn edge-holes)
 PEERS=opencv-csrt,opencv-kcf,opencv-medianflow
 
 start=$(date +%s)
@@ -44,6 +42,8 @@ stamp "build the host tools in $BUILD"
     cuetrack-microbench cuetrack-synth >/dev/null ||
   { echo "benchmarks.sh: the host build failed (cmake --build $BUILD)" >&2; exit 1; }
 BENCH="$BUILD/bin/cuetrack-bench"
+mapfile -t SCENES < <("$BUILD/bin/cuetrack-synth" --list)  # every synthetic scene
+[ ${#SCENES[@]} -gt 0 ] || { echo "benchmarks.sh: cuetrack-synth --list named no scene" >&2; exit 1; }
 rm -rf "$OUT"
 mkdir -p "$OUT" "$IMG"
 status=0
@@ -175,7 +175,7 @@ page="$OUT/benchmarks.md"
   echo
   if [ $have_shared = 1 ]; then
     echo "Every tracking change is judged here (docs/algorithm.md): 13 real videos of"
-    echo "\`../shared/data/otb\` (OTB, VOT, UAV123, UAVDT), BoBoT C, E and H, and the fifteen synthetic"
+    echo "\`../shared/data/otb\` (OTB, VOT, UAV123, UAVDT), BoBoT C, E and H, and the ${#SCENES[@]} synthetic"
     echo "RGB-D scenes; cuetrack 5 seeds, the OpenCV trackers once (they are deterministic). Mean"
     echo "overlap [%] per sequence; the last column is best minus 1.1, \`*\` where it exceeds the"
     echo "seed-to-seed spread. Command:"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The development set in one command: cuetrack-bench over every sequence of
 # ../shared/data/otb (13 real videos), ../shared/data/bobot (BoBoT C, E, H) and the
-# team's 15 synthetic RGB-D scenes (31 sequences), CONFIG... (default: best 1.1) with 5 seeds each,
+# synthetic RGB-D scenes of cuetrack-synth --list (15: 31 sequences), CONFIG... (default: best 1.1) with 5 seeds each,
 # beside OpenCV's CSRT, KCF and MedianFlow (deterministic: run once, cached).
 #
 #   scripts/devset.sh [CONFIG...]        e.g. scripts/devset.sh best best-nolost 1.1
@@ -23,8 +23,6 @@ OUT=${OUT:-build/devset}
 RUNS=${RUNS:-5}
 PEERS=${PEERS-opencv-csrt,opencv-kcf,opencv-medianflow}
 FRAMES=${FRAMES:-}
-SCENES=(moving twin-crossing occlusion untextured lighting approach box turn
-        fast lookalike leave-return against-surface held flat-turn edge-holes)
 configs=("$@")
 [ ${#configs[@]} -eq 0 ] && configs=(best 1.1)
 
@@ -34,12 +32,17 @@ if [ ! -d "$SHARED/data/otb" ] || [ ! -d "$SHARED/data/bobot" ]; then
 fi
 
 BENCH="$BUILD/bin/cuetrack-bench"
-if [ ! -x "$BENCH" ] || [ -n "$(find core apps drivers platform -newer "$BENCH" -name '*.[ch]pp' -print -quit)" ]; then
-  echo "devset.sh: building cuetrack-bench in $BUILD" >&2
+SYNTH="$BUILD/bin/cuetrack-synth"
+if [ ! -x "$BENCH" ] || [ ! -x "$SYNTH" ] ||
+   [ -n "$(find core apps drivers platform -newer "$BENCH" -name '*.[ch]pp' -print -quit)" ]; then
+  echo "devset.sh: building cuetrack-bench and cuetrack-synth in $BUILD" >&2
   { [ -f "$BUILD/CMakeCache.txt" ] || cmake --preset host -B "$BUILD" >/dev/null; } &&
-    cmake --build "$BUILD" --target cuetrack-bench -j"$(nproc)" >/dev/null ||
-    { echo "devset.sh: the build of cuetrack-bench failed (run: cmake --build $BUILD --target cuetrack-bench)" >&2; exit 1; }
+    cmake --build "$BUILD" --target cuetrack-bench cuetrack-synth -j"$(nproc)" >/dev/null ||
+    { echo "devset.sh: the build of cuetrack-bench failed (run: cmake --build $BUILD --target cuetrack-bench cuetrack-synth)" >&2; exit 1; }
 fi
+# Every synthetic scene the generator has (cuetrack-synth --list).
+mapfile -t SCENES < <("$SYNTH" --list)
+[ ${#SCENES[@]} -gt 0 ] || { echo "devset.sh: $SYNTH --list named no scene" >&2; exit 1; }
 
 seqs=()
 for d in "$SHARED"/data/otb/*/; do [ -f "$d/groundtruth_rect.txt" ] && seqs+=("${d%/}"); done
