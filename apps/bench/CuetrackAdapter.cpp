@@ -17,6 +17,7 @@ Tracker& sharedTracker() {
 // Ablations of the beyond-the-paper switches: "<preset>-<switch off>", e.g.
 // best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
 // best-nofastmotion (no jumping particles, no coasting over dropped frames),
+// best-nocorrelation (no template cue),
 // 1.1-centrednegatives (2D near negatives centred on the estimate).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
@@ -26,6 +27,7 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
   static const Off kOffs[] = {{"-nolost", &TrackerConfig::lostDetection},
                               {"-fixedsize", &TrackerConfig::adaptCylinderSize},
                               {"-nofastmotion", &TrackerConfig::fastMotion},
+                              {"-nocorrelation", &TrackerConfig::correlationCue},
                               {"-centrednegatives", &TrackerConfig::anchoredNegatives2d}};
   for (const Off& o : kOffs) {
     const std::string suffix(o.suffix);

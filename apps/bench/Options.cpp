@@ -54,8 +54,9 @@ const char* usage() {
          "                     (repeatable; default cuetrack)\n"
          "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best, or a\n"
          "                     preset with a beyond-the-paper switch off: best-nolost,\n"
-         "                     best-fixedsize, best-nofastmotion; or a paper preset\n"
-         "                     with 2D negatives centred: 1.1-centrednegatives\n"
+         "                     best-fixedsize, best-nofastmotion, best-nocorrelation;\n"
+         "                     or a paper preset with 2D negatives centred:\n"
+         "                     1.1-centrednegatives\n"
          "                     (repeatable; default best)\n"
          "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
          "  --peer-runs N      runs for the OpenCV peers (default: --runs)\n"
@@ -165,7 +166,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
         if (!isCuetrackConfig(c)) {
           *err = "--config: unknown configuration '" + c +
                  "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
-                 "best-nofastmotion, 1.1-centrednegatives)";
+                 "best-nofastmotion, best-nocorrelation, 1.1-centrednegatives)";
           return false;
         }
         configs.push_back(c);

@@ -143,6 +143,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     q.size[1] = b.h;
   }
   _lastEstimate = q;
+  _prevEstimate = q;
   _depthGuard.reset(q.p[2]);
   _lastBox = b;
   _sizeFilter.reset(b);
@@ -167,6 +168,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   addNegatives(b, _set.numNegatives() + tuning::training::kExamples, roi);  // fill the FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
   train();
+  if (_config.correlationCue) _corr.reset(_channels.tables(), b);
 
   _sizer.clear();
   if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
@@ -181,6 +183,8 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
 
 void Tracker::learn(const Box& estimate, const PixelRect& roi) {
   addExample(estimate, true);
+  if (_config.correlationCue)
+    _corr.learn(_channels.tables(), estimate, tuning::correlation::kLearnRate);
   addNegatives(estimate, tuning::training::kNegativesPerUpdate, roi);
   if (_config.dynamicPool && _config.sampling == FeatureSampling::Sparse) {
     const int replaced = _pool.update(_featureErrors, _rng);
@@ -232,6 +236,8 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
                     static_cast<float>(roi.width()) + 2.f * m * meanW,
                     static_cast<float>(roi.height()) + 2.f * m * meanH},
                 _imageW, _imageH);
+  if (_config.correlationCue && !wasLost && _corr.ready())
+    roi = unite(roi, clipBox(CorrelationCue::region(_lastBox), _imageW, _imageH));
   if (roi.width() < 2 || roi.height() < 2) roi = PixelRect{0, 0, _imageW, _imageH};
   return roi;
 }
@@ -255,7 +261,16 @@ Tracker::Estimate Tracker::estimate() {
   for (int i = 0; i < n; ++i)
     if (_scores[i] > cMax) cMax = _scores[i];
   float* w = _filter.weights();
-  for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(tuning::kWeightGain * (_scores[i] - cMax));
+  if (_corrActive) {
+    float rMax = -2.f;
+    for (int i = 0; i < n; ++i)
+      if (_corrScores[i] > rMax) rMax = _corrScores[i];
+    for (int i = 0; i < n; ++i)
+      w[i] = fmath::fastExp(tuning::kWeightGain * (_scores[i] - cMax) +
+                            tuning::correlation::kResponseGain * (_corrScores[i] - rMax));
+  } else {
+    for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(tuning::kWeightGain * (_scores[i] - cMax));
+  }
 
   // The weighted mean (the paper takes the heaviest particle: docs/experiments.md).
   Estimate e;
@@ -316,6 +331,57 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   return learned;
 }
 
+void Tracker::correlate(float dtS) {
+  _corrActive = false;
+  if (!_corr.search(_channels.tables(), _lastBox)) return;
+  _corrActive = true;
+  const int n = _filter.size();
+  // Some particles onto the peak, when there is one (the target may have jumped where the
+  // cloud did not reach).
+  int moved = 0;
+  if (_corr.peak() >= tuning::correlation::kMinPeak) {
+    const Box c = _corr.peakBox();
+    const float side = fmath::sqrtf(c.w * c.h);
+    const float jitter = tuning::motion2d::kPositionNoise * side;
+    constexpr int every = tuning::correlation::kEvery;
+    for (int i = tuning::correlation::kSlot; i < n; i += every) {
+      const float u = c.x + 0.5f * c.w + jitter * _rng.gaussianFast();
+      const float v = c.y + 0.5f * c.h + jitter * _rng.gaussianFast();
+      Particle q = _prevEstimate;
+      if (_is3d) {
+        q.p = backProject(_k, u, v, _prevEstimate.p.z());
+        q.v = (q.p - _prevEstimate.p) / (dtS > 0.f ? dtS : 1.f);
+        q.v.z() = 0.f;
+        keepInView(q, _k, _imageW, _imageH);
+        correctDepth(q, _channels, _k, dtS, _imageW, _imageH);
+      } else {
+        q.p[0] = u;
+        q.p[1] = v;
+        q.v[0] = u - _prevEstimate.p[0];  // px per frame
+        q.v[1] = v - _prevEstimate.p[1];
+        q.size[0] = c.w;
+        q.size[1] = c.h;
+      }
+      _filter[i] = q;
+      _movedIndex[moved] = static_cast<uint16_t>(i);
+      _movedBoxes[moved] = particleBox(q);
+      _boxes[i] = _movedBoxes[moved];
+      const Box& b = _boxes[i];
+      _movedValid[moved] =
+          !b.empty() && b.w >= 4.f && b.h >= 4.f && LostSearch::insideEnough(b, _imageW, _imageH);
+      ++moved;
+    }
+    _strong.evaluateMany(_channels.tables(), _movedBoxes, _movedValid, moved, _movedScores);
+    for (int k = 0; k < moved; ++k)
+      _scores[_movedIndex[k]] = _movedValid[k] != 0 ? _movedScores[k] : -1.f;
+  }
+  for (int i = 0; i < n; ++i) {
+    const Box& b = _boxes[i];
+    _corrScores[i] =
+        b.empty() ? CorrelationCue::kNoResponse : _corr.at(b.x + 0.5f * b.w, b.y + 0.5f * b.h);
+  }
+}
+
 void Tracker::correctDepths(float dtS) {
   // Pull each particle onto the measured surface (paper eq. 2).
   const int n = _filter.size();
@@ -354,6 +420,8 @@ TrackResult Tracker::update(const Frame& frame) {
   if (_is3d && frame.hasDepth()) correctDepths(dtS);
   const uint64_t t3 = now();
   score(roi, wasLost);
+  _corrActive = false;
+  if (_config.correlationCue && !wasLost) correlate(dtS);
   Estimate e = estimate();
   const uint64_t t4 = now();
   const bool learned = decide(frame, e, wasLost, roi);
@@ -368,7 +436,10 @@ TrackResult Tracker::update(const Frame& frame) {
     // correction gave search particles, so the cloud spreads around where it is.
     for (int i = 0; i < n; ++i) _filter[i].v.setZero();
   }
-  if (!e.box.empty()) _lastBox = e.box;
+  if (!e.box.empty()) {
+    _lastBox = e.box;
+    _prevEstimate = e.particle;
+  }
 
   r.state = _state;
   r.box = _padding.toTarget(_lastBox);

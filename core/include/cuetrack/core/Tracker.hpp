@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/CorrelationCue.hpp"
 #include "cuetrack/core/CylinderSizer.hpp"
 #include "cuetrack/core/DepthGuard.hpp"
 #include "cuetrack/core/DepthMedian.hpp"
@@ -87,7 +88,8 @@ class Tracker {
                     bool wasLost);                 // motion (+ search while lost); the ROI
   void correctDepths(float dtS);                   // 3D: every particle onto the surface
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
-  Estimate estimate();                             // weights and the estimate
+  void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
+  Estimate estimate();        // weights and the estimate
   // Lost detection, the update gate and learning; true when learnt.
   bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi);
 
@@ -120,6 +122,15 @@ class Tracker {
   WindowPadding _padding{};    // target -> window, for a target under kMinTrackedSidePx
   SizeFilter2d _sizeFilter{};  // 2D: the estimate's size, smoothed
   Particle _lastEstimate{};
+  Particle _prevEstimate{};  // the last frame's estimate (correlate() moves it)
+  CorrelationCue _corr;
+  bool _corrActive = false;          // this frame's map was searched
+  float _corrScores[kMaxParticles];  // the template's response at each particle
+  static constexpr int kMaxMoved = kMaxParticles / tuning::correlation::kEvery + 1;
+  uint16_t _movedIndex[kMaxMoved];  // the particles moved onto the peak this frame
+  Box _movedBoxes[kMaxMoved];
+  uint8_t _movedValid[kMaxMoved];
+  float _movedScores[kMaxMoved];
   int _lostFrames = 0;     // lost detection (beyond the paper): frames since declared lost
   DepthGuard _depthGuard;  // ... 3D: the estimate's depth against the confirmed one
 

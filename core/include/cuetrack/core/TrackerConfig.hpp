@@ -35,6 +35,9 @@ struct TrackerConfig {
   // Fast targets and slow or dropped frames: after a learnt frame some particles jump
   // (FastMotion); in 2D a particle coasts on its velocity over dropped frames.
   bool fastMotion = false;
+  // Abrupt motion: a slowly learnt gray template is matched densely around the last
+  // estimate (CorrelationCue); particles are drawn at its peak and weighed by it too.
+  bool correlationCue = false;
   // 2D negatives shrunk or grown around the estimate are anchored at its start, centre or
   // end along each axis (else centred): an implementation choice of every preset, here so
   // that its effect can be measured (`1.1-centrednegatives`).
