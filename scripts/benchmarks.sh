@@ -6,7 +6,8 @@
 #                     success and precision plots;
 #   BoBoT             the paper's protocol and Table 1: 1.1-1.4 and best, 10 seeds;
 #   Synthetic RGB-D   2.1-2.5 and best on the cuetrack-synth scenes, beside Table 3;
-#   Real Kinect depth ten real stills made into panning sequences (pan:);
+#   Real Kinect depth ten real stills made into panning sequences (pan:), and four
+#                     synthetic scenes' targets in real stills (still:, still_seqs.sh);
 #   Speed and memory  cuetrack-trackspeed per preset (host), the integral images
 #                     (cuetrack-microbench), and on aarch64 exact instructions per
 #                     frame (qemu-icount) when an aarch64 build exists;
@@ -66,11 +67,7 @@ syn_cmd=("$BENCH" --quiet "${syn_seqs[@]}" --tracker "cuetrack,$PEERS" --config 
          --runs "$SYN_RUNS" --peer-runs 1 --peer-cache "$CACHE" --paper table3 --markdown "$OUT/synth.md")
 syn2d_cmd=("$BENCH" --quiet "${syn_seqs[@]}" --tracker cuetrack --config best --rgb-only
            --runs "$SYN_RUNS" --markdown "$OUT/synth2d.md")
-STILLS="$SHARED/data/kinect-stills"
-NYU="$STILLS/nyu-joinmap"
-TUM="$STILLS/tum-fr1"
-nyu_k=518,519,325.5,253.5
-tum_k=517.3,516.5,318.6,255.3,0.2  # freiburg1; depth value / 5 = mm
+source scripts/still_seqs.sh  # STILLS, NYU, TUM, nyu_k, tum_k, still_seqs
 pan_seqs=("pan:$NYU/color/5.png,$NYU/depth/5.pgm,302,102,186,240,$nyu_k"
           "pan:$NYU/color/3.png,$NYU/depth/3.pgm,324,132,138,193,$nyu_k"
           "pan:$NYU/color/1.png,$NYU/depth/1.pgm,116,142,96,148,$nyu_k"
@@ -84,6 +81,11 @@ pan_seqs=("pan:$NYU/color/5.png,$NYU/depth/5.pgm,302,102,186,240,$nyu_k"
 pan_cmd=("$BENCH" --quiet "${pan_seqs[@]}" --tracker cuetrack,opencv-csrt,opencv-kcf
          --config 2.1,2.4,2.5,best --runs "$SYN_RUNS" --peer-runs 1 --peer-cache "$CACHE"
          --markdown "$OUT/pan.md")
+# The same trackers on synthetic targets in real stills: best in 3D, 2.1, and best in 2D.
+still_cmd=("$BENCH" --quiet "${still_seqs[@]}" --tracker cuetrack --config best,2.1
+           --runs "$SYN_RUNS" --markdown "$OUT/still.md")
+still2d_cmd=("$BENCH" --quiet "${still_seqs[@]}" --tracker cuetrack --config best --rgb-only
+             --runs "$SYN_RUNS" --markdown "$OUT/still2d.md")
 if [ -d "$BOBOT" ]; then
   stamp "BoBoT"
   "${bobot_cmd[@]}" > /dev/null || status=1
@@ -94,6 +96,9 @@ stamp "synthetic RGB-D"
 if [ -d "$NYU" ] && [ -d "$TUM" ]; then
   stamp "panned real stills"
   "${pan_cmd[@]}" > /dev/null || status=1
+  stamp "synthetic targets in real stills"
+  "${still_cmd[@]}" > /dev/null || status=1
+  "${still2d_cmd[@]}" > /dev/null || status=1
 fi
 
 stamp "speed (host)"
@@ -231,6 +236,29 @@ page="$OUT/benchmarks.md"
     code "${pan_cmd[*]}"
     echo
     cat "$OUT/pan.md"
+  else
+    echo "(not run: $STILLS missing)"
+  fi
+  echo
+  echo "## Real Kinect depth: synthetic targets in real stills"
+  echo
+  if [ -f "$OUT/still.md" ]; then
+    echo "Four synthetic scenes' objects rendered into the same stills by the \`still:\` source"
+    echo "(scripts/still_seqs.sh; exact truth; the target's depth through the synthetic Kinect"
+    echo "model, the room's the real one): a book turning 100 mm before the TUM monitor, a cylinder"
+    echo "60 mm before the NYU armchair's back with a board passing in front, a box turning before"
+    echo "the NYU sideboard, a target carried with a hand over the TUM desk. cuetrack $SYN_RUNS seeds."
+    echo "Command:"
+    echo
+    code "${still_cmd[*]}"
+    echo
+    cat "$OUT/still.md"
+    echo
+    echo "The same with their depth dropped (\`best\` in 2D). Command:"
+    echo
+    code "${still2d_cmd[*]}"
+    echo
+    cat "$OUT/still2d.md"
   else
     echo "(not run: $STILLS missing)"
   fi

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The development set in one command: cuetrack-bench over every sequence of
-# ../shared/data/otb (13 real videos), ../shared/data/bobot (BoBoT C, E, H) and the
-# synthetic RGB-D scenes of cuetrack-synth --list (15: 31 sequences), CONFIG... (default: best 1.1) with 5 seeds each,
-# beside OpenCV's CSRT, KCF and MedianFlow (deterministic: run once, cached).
+# ../shared/data/otb (13 real videos), ../shared/data/bobot (BoBoT C, E, H), the
+# synthetic RGB-D scenes of cuetrack-synth --list (15) and, when
+# ../shared/data/kinect-stills is there, 4 synthetic scenes in real Kinect stills
+# (still:, scripts/still_seqs.sh): 35 sequences, CONFIG... (default: best 1.1) with 5
+# seeds each, beside OpenCV's CSRT, KCF and MedianFlow (deterministic: run once, cached).
 #
 #   scripts/devset.sh [CONFIG...]        e.g. scripts/devset.sh best best-nolost 1.1
 #
@@ -48,6 +50,8 @@ seqs=()
 for d in "$SHARED"/data/otb/*/; do [ -f "$d/groundtruth_rect.txt" ] && seqs+=("${d%/}"); done
 for v in "$SHARED"/data/bobot/*.avi; do seqs+=("$v"); done
 for s in "${SCENES[@]}"; do seqs+=("synth:$s"); done
+source scripts/still_seqs.sh  # still_seqs: empty without the stills
+seqs+=("${still_seqs[@]}")
 
 mkdir -p "$OUT"
 trackers=cuetrack

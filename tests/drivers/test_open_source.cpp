@@ -84,4 +84,11 @@ TEST_CASE("openFrameSource errors are one line naming the spec", "[open][bad]") 
   CHECK(std::string(err).find(frameSourcesHaveOpenCv()
                                   ? "none.png: cannot decode image"
                                   : "needs a host build with OpenCV") != std::string::npos);
+  // A scene in a real still: the same.
+  const std::string still =
+      "still:" + tmp / "none.png" + "," + tmp / "none.png" + ",500,500,4,4:moving@1,1,50";
+  CHECK_FALSE(openFrameSource(still.c_str(), SourceOptions{}, err, sizeof err));
+  CHECK(std::string(err).find(frameSourcesHaveOpenCv()
+                                  ? "none.png: cannot decode image"
+                                  : "needs a host build with OpenCV") != std::string::npos);
 }

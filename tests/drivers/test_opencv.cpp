@@ -565,6 +565,143 @@ TEST_CASE("panned still: bad specs give one line naming the fault", "[opencv][pa
         "c.png: depth must be 16-bit single-channel");
 }
 
+TEST_CASE("scene in a still: the still's size, intrinsics and depth, the scene over it",
+          "[opencv][still]") {
+  TempDir tmp;
+  writeStill(tmp);  // 128x96, depth 1000 + 10 x + y mm
+  const std::string spec =
+      "still:" + tmp / "c.png" + "," + tmp / "d.png" + ",100,101,64,48:flat-turn@70,40,60:4";
+  StillSceneReader r;
+  REQUIRE(r.open(spec.c_str()));
+  CHECK(r.frameCount() == 4);
+  CHECK(r.nominalFps() == 30.0);
+  // Named by the still's folder, its stem, the scene and the pixel.
+  CHECK(std::string(r.name()) ==
+        "still-" + tmp.path().substr(tmp.path().find_last_of('/') + 1) + "-c-flat-turn-70-40");
+  auto slot = std::make_unique<FrameSlot>();
+  const cv::Mat still = cv::imread(tmp / "c.png", cv::IMREAD_COLOR);
+  int frames = 0;
+  while (r.next(*slot) == ReadStatus::Ok) {
+    INFO("frame " << frames);
+    ++frames;
+    REQUIRE(slot->rgb.width() == 128);
+    REQUIRE(slot->rgb.height() == 96);
+    CHECK(slot->intrinsics.fx == 100.f);
+    CHECK(slot->intrinsics.fy == 101.f);
+    CHECK(slot->intrinsics.cx == 64.f);
+    REQUIRE(slot->hasGroundTruth);
+    const Box g = slot->groundTruth;
+    REQUIRE_FALSE(g.empty());
+    CHECK(g.x + g.w / 2 == Approx(70.f).margin(2.f));
+    CHECK(g.y + g.h / 2 == Approx(40.f).margin(2.f));
+    // The surface near 70,40 is at 1740 mm: the box's front 60 + 50 mm before it.
+    const SynthTruth& t = r.scene()->truth();
+    CHECK(t.centreMm[2] == Approx(1740.f - 60.f - 25.f).margin(1.f));
+    const uint16_t centre = slot->depthMm.data()[40 * 128 + 70];
+    CHECK(centre == Approx(1740 - 110).margin(25));
+    // Far from the box: the still, depth exact and colour within the noise.
+    for (int y = 0; y < 96; y += 5)
+      for (int x = 0; x < 128; x += 3) {
+        if (x > g.x - 6 && x < g.x + g.w + 2 && y > g.y - 2 && y < g.y + g.h + 2) continue;
+        REQUIRE(slot->depthMm.data()[y * 128 + x] == 1000 + 10 * x + y);
+        const cv::Vec3b bgr = still.at<cv::Vec3b>(y, x);
+        REQUIRE(std::abs(slot->rgb.data()[y * 128 + x].r - bgr[2]) <= 2);
+      }
+  }
+  CHECK(frames == 4);
+  // Depth units: 0.2 mm per unit (TUM) scales the still before the scene is placed.
+  StillSceneReader tum;
+  const std::string tumSpec =
+      "still:" + tmp / "c.png" + "," + tmp / "d.png" + ",100,101,64,48,0.2:moving@70,40,0:1";
+  CHECK_FALSE(tum.open(tumSpec.c_str()));  // 348 mm: nearer than the Kinect reads
+  CHECK(std::string(tum.error()).find("nearer than 500 mm (the surface at 70,40 is 348 mm away)") !=
+        std::string::npos);
+}
+
+TEST_CASE("scene in a still: bad specs give one line naming the fault", "[opencv][still][bad]") {
+  TempDir tmp;
+  writeStill(tmp);
+  const std::string c = tmp / "c.png", d = tmp / "d.png";
+  const std::string still = "still:" + c + "," + d;
+  const auto fails = [](const std::string& spec, const std::string& expect) {
+    StillSceneReader r;
+    INFO(spec);
+    REQUIRE_FALSE(r.open(spec.c_str()));
+    INFO(r.error());
+    CHECK(std::string(r.error()).find(expect) != std::string::npos);
+    CHECK(std::string(r.error()).find('\n') == std::string::npos);
+    auto slot = std::make_unique<FrameSlot>();
+    CHECK(r.next(*slot) == ReadStatus::Error);
+  };
+  const std::string syntax = "expected still:RGB,DEPTH,fx,fy,cx,cy[,mmPerUnit]:SCENE@u,v,gapMm";
+  fails(still + ",100,101,64,48", syntax + "[:frames] (no :SCENE@u,v,gapMm)");
+  fails(still + ",100,101,64,48:moving", "(no :SCENE@u,v,gapMm)");
+  fails(still + ",100,101:moving@60,40,50", "(4 still fields, 3 placement fields)");
+  fails(still + ",100,101,64,48:moving@60,40", "(6 still fields, 2 placement fields)");
+  fails(still + ",100,wide,64,48:moving@60,40,50", "fy 'wide' is not a number");
+  fails(still + ",100,101,64,48:moving@60,x,50", "v 'x' is not a number");
+  fails(still + ",100,101,64,48,0:moving@60,40,50", "fx, fy and mmPerUnit must be positive");
+  fails(still + ",100,101,64,48:moving@60,40,-5", "gapMm must be >= 0");
+  fails(still + ",100,101,64,48:nope@60,40,50", "unknown scene 'nope' (scenes: moving,");
+  fails(still + ",100,101,64,48:moving@60,40,50:0", "frame count '0' is not a number");
+  fails(still + ",100,101,64,48:moving@600,40,50", "pixel 600,40 lies outside the 128x96 still");
+  fails("still:" + tmp / "nope.png" + "," + d + ",100,101,64,48:moving@60,40,50",
+        "nope.png: cannot decode image");
+  fails("still:" + c + "," + c + ",100,101,64,48:moving@60,40,50",
+        "c.png: depth must be 16-bit single-channel");
+}
+
+TEST_CASE("scene in a still: the real stills of the development set keep the target in view",
+          "[opencv][still][shared]") {
+  const std::string dir = test::sharedDataDir() + "/kinect-stills";
+  if (!test::pathExists(dir + "/tum-fr1") || !test::pathExists(dir + "/nyu-joinmap")) {
+    CUETRACK_SKIP("shared data absent (" << dir << ")");
+  }
+  // The sequences of scripts/devset.sh and scripts/benchmarks.sh.
+  const std::string tum = "still:" + dir + "/tum-fr1/1.png," + dir +
+                          "/tum-fr1/1_depth.png,517.3,516.5,318.6,255.3,0.2:";
+  const auto nyu = [&](int i) {
+    const std::string n = std::to_string(i);
+    return "still:" + dir + "/nyu-joinmap/color/" + n + ".png," + dir + "/nyu-joinmap/depth/" + n +
+           ".pgm,518,519,325.5,253.5:";
+  };
+  struct Case {
+    std::string spec;
+    int minInView;       // frames of 150 with a ground-truth box
+    float minMeanShown;  // mean visible fraction (hidden by the still, a hand, an occluder)
+  };
+  const Case cases[] = {
+      {tum + "flat-turn@260,170,100", 150, 0.9f},
+      {nyu(5) + "occlusion@370,200,60", 120, 0.75f},
+      {nyu(3) + "turn@170,320,150", 150, 0.95f},
+      {tum + "held@300,180,300", 150, 0.6f},
+  };
+  auto slot = std::make_unique<FrameSlot>();
+  for (const Case& c : cases) {
+    INFO(c.spec);
+    StillSceneReader r;
+    REQUIRE(r.open(c.spec.c_str()));
+    int inView = 0;
+    double shown = 0, nearSurface = 0;
+    while (r.next(*slot) == ReadStatus::Ok) {
+      const SynthTruth& t = r.scene()->truth();
+      inView += !slot->groundTruth.empty();
+      shown += t.visibleFraction();
+      // Where the target is seen, its depth is the object's: the box's centre reads within
+      // 200 mm of the target's centre (or is its shadow, a hand or an occluder in front).
+      const Box& g = slot->groundTruth;
+      if (g.empty()) continue;
+      const uint16_t d =
+          slot->depthMm
+              .data()[static_cast<int>(g.y + g.h / 2) * 640 + static_cast<int>(g.x + g.w / 2)];
+      nearSurface += d != 0 && std::fabs(d - t.centreMm[2]) < 200.f;
+    }
+    CHECK(inView >= c.minInView);
+    CHECK(shown / 150 >= c.minMeanShown);
+    CHECK(nearSurface >= 0.5 * inView);
+  }
+}
+
 namespace {
 // Frame `name` of the RGB-D folder `dir` replaced by a flat 320x240 colour + depth pair.
 void writeSmallRgbdFrame(const std::string& dir, const char* name) {

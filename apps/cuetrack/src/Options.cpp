@@ -63,7 +63,7 @@ const char* usageText() {
          "                                       lighting approach box turn; PATH: a fakenect\n"
          "                                       recording folder (host builds with OpenCV\n"
          "                                       also read RGB-D folders, OTB folders, .avi,\n"
-         "                                       and pan: stills; docs/recordings.md)\n"
+         "                                       and pan:/still: stills; docs/recordings.md)\n"
          "target (default: the ground truth where the target first shows, else wait for START):\n"
          "  --box X,Y,W,H      target box in the first frame [px]\n"
          "  --no-gt            ignore ground truth: wait for --box or a serial START command\n"

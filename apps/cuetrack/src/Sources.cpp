@@ -122,7 +122,7 @@ bool kinectSupported() {
 
 void describeGroundTruth(const char* spec, char* out, size_t outLen) {
   if (!spec || std::strncmp(spec, "kinect", 6) == 0 || std::strncmp(spec, "synth", 5) == 0 ||
-      std::strncmp(spec, "pan:", 4) == 0) {
+      std::strncmp(spec, "pan:", 4) == 0 || std::strncmp(spec, "still:", 6) == 0) {
     if (spec) {
       std::snprintf(out, outLen, "%s ground truth", spec);
     } else {

@@ -20,6 +20,8 @@
 
 #include "cuetrack/drivers/FileBuffer.hpp"
 #include "cuetrack/drivers/RecordedParsers.hpp"
+#include "cuetrack/drivers/StillPlacement.hpp"
+#include "cuetrack/drivers/SyntheticSource.hpp"
 
 namespace cuetrack {
 
@@ -874,6 +876,172 @@ ReadStatus StillPanReader::next(FrameSlot& out) {
   out.groundTruth =
       intersectBox(shifted, Box{0.f, 0.f, static_cast<float>(_cropW), static_cast<float>(_cropH)});
   return ReadStatus::Ok;
+}
+
+}  // namespace cuetrack
+
+// ---- A synthetic scene in a real RGB-D still ----------------------------------------
+
+namespace cuetrack {
+
+struct StillSceneReader::Still {
+  FixedImage<Rgb8, kMaxImageWidth, kMaxImageHeight> rgb;
+  FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight> depthMm;
+};
+
+StillSceneReader::StillSceneReader() : _still(new Still) {}
+StillSceneReader::~StillSceneReader() = default;
+
+int StillSceneReader::frameCount() const {
+  return _scene ? _scene->frameCount() : -1;
+}
+
+double StillSceneReader::nominalFps() const {
+  return _scene ? _scene->nominalFps() : 0.0;
+}
+
+bool StillSceneReader::open(const char* spec, const SourceOptions& opt) {
+  _error[0] = '\0';
+  _scene.reset();
+  static const char kSyntax[] = "still:RGB,DEPTH,fx,fy,cx,cy[,mmPerUnit]:SCENE@u,v,gapMm[:frames]";
+  std::string body = spec;
+  if (body.rfind("still:", 0) == 0) body = body.substr(6);
+  // From the right: "@u,v,gapMm[:frames]", then ":SCENE"; the paths keep any '@' or ':'.
+  const size_t at = body.find_last_of('@');
+  const size_t sceneColon = at == std::string::npos ? at : body.find_last_of(':', at);
+  if (at == std::string::npos || sceneColon == std::string::npos) {
+    std::snprintf(_error, sizeof _error, "%s: expected %s (no :SCENE@u,v,gapMm)", spec, kSyntax);
+    return false;
+  }
+  const std::string scene = body.substr(sceneColon + 1, at - sceneColon - 1);
+  std::string place = body.substr(at + 1);
+  int frames = -1;
+  const size_t framesColon = place.find(':');
+  if (framesColon != std::string::npos) {
+    const std::string n = place.substr(framesColon + 1);
+    if (!rec::parseFrameCount(n.c_str(), &frames)) {
+      std::snprintf(_error, sizeof _error, "%s: frame count '%s' is not a number in 1..%ld", spec,
+                    n.c_str(), rec::kMaxSpecFrames);
+      return false;
+    }
+    place = place.substr(0, framesColon);
+  }
+  const auto split = [](const std::string& s) {
+    std::vector<std::string> f;
+    for (size_t start = 0;;) {
+      const size_t comma = s.find(',', start);
+      f.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+      if (comma == std::string::npos) return f;
+      start = comma + 1;
+    }
+  };
+  const std::vector<std::string> f = split(body.substr(0, sceneColon));
+  const std::vector<std::string> p = split(place);
+  if ((f.size() != 6 && f.size() != 7) || p.size() != 3) {
+    std::snprintf(_error, sizeof _error, "%s: expected %s (%zu still fields, %zu placement fields)",
+                  spec, kSyntax, f.size(), p.size());
+    return false;
+  }
+  float k[5] = {0.f, 0.f, 0.f, 0.f, 1.f};
+  static const char* const kField[5] = {"fx", "fy", "cx", "cy", "mmPerUnit"};
+  for (size_t i = 2; i < f.size(); ++i) {
+    if (!parseFloat(f[i], &k[i - 2])) {
+      std::snprintf(_error, sizeof _error, "%s: %s '%s' is not a number", spec, kField[i - 2],
+                    f[i].c_str());
+      return false;
+    }
+  }
+  float uvGap[3] = {0.f, 0.f, 0.f};
+  static const char* const kPlaceField[3] = {"u", "v", "gapMm"};
+  for (size_t i = 0; i < 3; ++i) {
+    if (!parseFloat(p[i], &uvGap[i])) {
+      std::snprintf(_error, sizeof _error, "%s: %s '%s' is not a number", spec, kPlaceField[i],
+                    p[i].c_str());
+      return false;
+    }
+  }
+  if (!(k[0] > 0.f) || !(k[1] > 0.f) || !(k[4] > 0.f)) {
+    std::snprintf(_error, sizeof _error, "%s: fx, fy and mmPerUnit must be positive", spec);
+    return false;
+  }
+  if (!(uvGap[2] >= 0.f)) {
+    std::snprintf(_error, sizeof _error, "%s: gapMm must be >= 0 (the target in front)", spec);
+    return false;
+  }
+  SceneSpec s;
+  if (!makeScene(scene.c_str(), &s)) {
+    std::string names;
+    for (int i = 0; i < sceneCount(); ++i) names += std::string(i ? ", " : "") + sceneName(i);
+    std::snprintf(_error, sizeof _error, "%s: unknown scene '%s' (scenes: %s)", spec, scene.c_str(),
+                  names.c_str());
+    return false;
+  }
+  if (!loadColourImage(f[0].c_str(), _still->rgb, _error, sizeof _error) ||
+      !loadDepthPng16(f[1].c_str(), _still->depthMm, _error, sizeof _error))
+    return false;
+  const int w = _still->rgb.width(), h = _still->rgb.height();
+  if (w < 32 || h < 32) {
+    std::snprintf(_error, sizeof _error, "%s: %dx%d is smaller than 32x32", f[0].c_str(), w, h);
+    return false;
+  }
+  if (_still->depthMm.width() != w || _still->depthMm.height() != h) {
+    std::snprintf(_error, sizeof _error, "%s: depth %dx%d does not match colour %dx%d",
+                  f[1].c_str(), _still->depthMm.width(), _still->depthMm.height(), w, h);
+    return false;
+  }
+  if (k[4] != 1.f) {
+    uint16_t* d = _still->depthMm.data();
+    for (int i = 0; i < w * h; ++i) {
+      const long mm = std::lround(static_cast<double>(d[i]) * k[4]);
+      d[i] = static_cast<uint16_t>(mm > 65535 ? 65535 : mm);
+    }
+  }
+  s.width = w;
+  s.height = h;
+  if (frames > 0) s.frameCount = frames;
+  if (opt.maxFrames >= 0 && opt.maxFrames < s.frameCount) s.frameCount = opt.maxFrames;
+  const CameraIntrinsics intrinsics{k[0], k[1], k[2], k[3]};
+  char why[256];
+  if (!placeInStill(&s, _still->depthMm.data(), w, h, intrinsics, uvGap[0], uvGap[1], uvGap[2], why,
+                    sizeof why)) {
+    std::snprintf(_error, sizeof _error, "%s: %s", spec, why);
+    return false;
+  }
+  // Named by the still's folder, its stem, the scene and the pixel, e.g.
+  // still-tum-fr1-1-flat-turn-250-170.
+  const std::string& rgbPath = f[0];
+  const auto lastPart = [](const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+  };
+  const size_t slash = rgbPath.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? std::string() : rgbPath.substr(0, slash);
+  std::string folder = lastPart(dir);
+  if ((folder == "color" || folder == "rgb") && dir.find('/') != std::string::npos)
+    folder = lastPart(dir.substr(0, dir.find_last_of('/')));
+  char pixel[48];
+  std::snprintf(pixel, sizeof pixel, "-%ld-%ld", std::lround(uvGap[0]), std::lround(uvGap[1]));
+  _name = "still-" + (folder.empty() ? std::string() : folder + "-") + stem(rgbPath) + "-" + scene +
+          pixel;
+  std::snprintf(s.name, sizeof s.name, "%s", _name.c_str());
+  _scene = std::make_unique<SyntheticSource>(s, opt.seed);
+  if (_scene->error()[0]) {
+    std::snprintf(_error, sizeof _error, "%s: %s", spec, _scene->error());
+    _scene.reset();
+    return false;
+  }
+  _scene->setBackdrop(_still->rgb.data(), _still->depthMm.data(), intrinsics);
+  return true;
+}
+
+ReadStatus StillSceneReader::next(FrameSlot& out) {
+  if (!_scene) {
+    std::snprintf(_error, sizeof _error, "still: scene not open");
+    return ReadStatus::Error;
+  }
+  const ReadStatus r = _scene->next(out);
+  if (r == ReadStatus::Error) std::snprintf(_error, sizeof _error, "%s", _scene->error());
+  return r;
 }
 
 }  // namespace cuetrack

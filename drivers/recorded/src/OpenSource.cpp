@@ -95,7 +95,10 @@ const char* frameSourceHelp() {
          "  <dir>/ with img/         OTB folder (+ groundtruth_rect.txt)                [OpenCV]\n"
          "  <file>.avi               BoBoT video (+ <file>.gt.txt)                      [OpenCV]\n"
          "  pan:RGB,DEPTH,x,y,w,h,fx,fy,cx,cy[,mmPerUnit][:frames]\n"
-         "                           a real RGB-D still panned (box in px; 150 frames)  [OpenCV]\n";
+         "                           a real RGB-D still panned (box in px; 150 frames)  [OpenCV]\n"
+         "  still:RGB,DEPTH,fx,fy,cx,cy[,mmPerUnit]:SCENE@u,v,gapMm[:frames]\n"
+         "                           a synth: scene's objects in a real RGB-D still, the\n"
+         "                           target at pixel u,v, gapMm before the surface  [OpenCV]\n";
 }
 
 std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptions& opt, char* err,
@@ -112,6 +115,13 @@ std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptio
     return openWith<StillPanReader>(spec, opt, err, errLen);
 #else
     return needsOpenCv(spec, "a panned still (PNG)", err, errLen);
+#endif
+  }
+  if (s.rfind("still:", 0) == 0) {
+#if CUETRACK_HAVE_OPENCV
+    return openWith<StillSceneReader>(spec, opt, err, errLen);
+#else
+    return needsOpenCv(spec, "a scene in a real still (PNG)", err, errLen);
 #endif
   }
   if (rec::isDirectory(spec)) {

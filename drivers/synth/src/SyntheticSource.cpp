@@ -14,6 +14,7 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 constexpr uint8_t kBackgroundOwner = 255;
+constexpr float kHoleZMm = 1e9f;  // a still's pixel without a reading: nothing is behind it
 
 uint64_t splitmix64(uint64_t& s) {
   uint64_t z = (s += 0x9E3779B97F4A7C15ull);
@@ -459,7 +460,10 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
   uint64_t fs = _seed * 0x100000001B3ull + static_cast<uint64_t>(index) + 1;
   const uint32_t frameSeed = static_cast<uint32_t>(splitmix64(fs));
 
-  renderBackground(out, frameSeed);
+  if (_backdropRgb)
+    renderBackdrop(out);
+  else
+    renderBackground(out, frameSeed);
 
   // Painter's order (far first) plus a z-test, so intersecting objects are still right.
   Posed posed[kMaxSceneObjects];
@@ -807,6 +811,10 @@ void SyntheticSource::applyDepthModel(FrameSlot& out, uint32_t frameSeed) {
         rawOut[u] = (zz >= minZ && zz <= maxZ) ? q : kinect::kRawNoDepth;
       }
     }
+    if (_backdropDepthMm) {
+      backdropDepthRow(v, dmm);
+      continue;
+    }
     // Pass 2, right to left: a pixel is in the projector's shadow when a nearer pixel to
     // its right lands at or left of it in the projector's image.
     float runMin = 1e30f;
@@ -816,6 +824,49 @@ void SyntheticSource::applyDepthModel(FrameSlot& out, uint32_t frameSeed) {
       runMin = up < runMin ? up : runMin;
       dmm[u] = shadowed ? 0 : _rawToMm.mm[_rowRaw[u]];
     }
+  }
+}
+
+void SyntheticSource::setBackdrop(const Rgb8* rgb, const uint16_t* depthMm,
+                                  const CameraIntrinsics& k) {
+  _backdropRgb = rgb;
+  _backdropDepthMm = depthMm;
+  _k = k;
+  _invFx = 1.f / _k.fx;
+  _invFy = 1.f / _k.fy;
+}
+
+void SyntheticSource::renderBackdrop(FrameSlot& out) {
+  const int n = _spec.width * _spec.height;
+  std::memcpy(static_cast<void*>(out.rgb.data()), _backdropRgb, sizeof(Rgb8) * n);
+  for (int i = 0; i < n; ++i) {
+    // A hole is no surface: it hides nothing behind it.
+    const uint16_t d = _backdropDepthMm[i];
+    _zMm[i] = d ? static_cast<float>(d) : kHoleZMm;
+    _owner[i] = kBackgroundOwner;
+  }
+}
+
+// The depth model's pass 2 over a still (pass 1 made _rowInvZ and _rowRaw): the still's
+// pixels keep their real reading, which already has its own noise and shadows, unless an
+// object's pixel casts the projector's shadow on them; an object's pixel is shadowed by
+// anything nearer to its right, object or real surface.
+void SyntheticSource::backdropDepthRow(int v, uint16_t* dmm) {
+  const int w = _spec.width;
+  const float fb = _k.fx * _spec.baselineMm;
+  const uint16_t* still = _backdropDepthMm + v * w;
+  const uint8_t* own = _owner + v * w;
+  float runMinAll = 1e30f, runMinObjects = 1e30f;
+  for (int u = w - 1; u >= 0; --u) {
+    const float up = static_cast<float>(u) - fb * _rowInvZ[u];  // column in the projector image
+    const bool object = own[u] != kBackgroundOwner;
+    if (object) {
+      dmm[u] = _spec.shadows && up > runMinAll ? 0 : _rawToMm.mm[_rowRaw[u]];
+      runMinObjects = up < runMinObjects ? up : runMinObjects;
+    } else {
+      dmm[u] = _spec.shadows && up > runMinObjects ? 0 : still[u];
+    }
+    runMinAll = up < runMinAll ? up : runMinAll;
   }
 }
 

@@ -6,6 +6,8 @@
 //   <dir> with rgb/ + depth/    RGB-D sequence folder            (host build with OpenCV)
 //   <dir> with img/             OTB folder                        (host build with OpenCV)
 //   <file>.avi                  BoBoT video + <file>.gt.txt       (host build with OpenCV)
+//   pan:RGB,DEPTH,...           a real RGB-D still, panned        (host build with OpenCV)
+//   still:RGB,DEPTH,...:SCENE@u,v,gapMm  a scene in a real still  (host build with OpenCV)
 //
 // Without OpenCV (the board) only synth and fakenect open; the others fail with a line
 // saying the format needs a host build with OpenCV.

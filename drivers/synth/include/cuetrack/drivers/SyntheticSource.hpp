@@ -194,6 +194,13 @@ class SyntheticSource final : public FrameSource {
   const SceneSpec& spec() const { return _spec; }
   // Position of object i at time t [s].
   void objectPosition(int i, float tS, float outMm[3]) const;
+  // A real registered RGB-D still in place of the procedural wall and floor (the still:
+  // source): colour and depth [mm, 0 = no reading] of the spec's width x height, owned by
+  // the caller and kept alive, with the still's own intrinsics (not scaled). Objects are
+  // drawn over it with a z-test against its depth (a hole hides nothing); its depth stays
+  // as it is except where an object covers it or shadows it; colour noise and lighting
+  // apply to the whole frame. Call before the first frame.
+  void setBackdrop(const Rgb8* rgb, const uint16_t* depthMm, const CameraIntrinsics& k);
 
  private:
   using Texture = Rgb8[kTextureSize * kTextureSize];
@@ -205,6 +212,8 @@ class SyntheticSource final : public FrameSource {
   };
 
   void renderBackground(FrameSlot& out, uint32_t frameSeed);
+  void renderBackdrop(FrameSlot& out);
+  void backdropDepthRow(int v, uint16_t* dmm);
   void renderObject(const Posed& p, FrameSlot& out, bool isTarget);
   void applyDepthModel(FrameSlot& out, uint32_t frameSeed);
   void applyEdgeHoles(FrameSlot& out, uint32_t frameSeed);
@@ -228,8 +237,10 @@ class SyntheticSource final : public FrameSource {
   // Per-pixel scratch, fixed: true depth and which object (255 = background) [mm].
   float _zMm[kMaxPixels];
   uint8_t _owner[kMaxPixels];
-  float _rowInvZ[kMaxImageWidth];   // depth model scratch, one row [1/mm]
-  int32_t _rowRaw[kMaxImageWidth];  // raw disparity of one row before the shadow test
+  float _rowInvZ[kMaxImageWidth];      // depth model scratch, one row [1/mm]
+  int32_t _rowRaw[kMaxImageWidth];     // raw disparity of one row before the shadow test
+  const Rgb8* _backdropRgb = nullptr;  // setBackdrop: the still, caller-owned
+  const uint16_t* _backdropDepthMm = nullptr;
 };
 
 }  // namespace cuetrack
