@@ -39,7 +39,7 @@ dirty=$(git status --porcelain -- core apps drivers platform | grep -q . && echo
 
 stamp "build the host tools in $BUILD"
 { [ -f "$BUILD/CMakeCache.txt" ] || cmake --preset host -B "$BUILD" >/dev/null; } &&
-  cmake --build "$BUILD" -j"$(nproc)" --target cuetrack-bench cuetrack-trackspeed \
+  cmake --build "$BUILD" -j"$(nproc)" --target cuetrack cuetrack-bench cuetrack-trackspeed \
     cuetrack-microbench cuetrack-synth >/dev/null ||
   { echo "benchmarks.sh: the host build failed (cmake --build $BUILD)" >&2; exit 1; }
 BENCH="$BUILD/bin/cuetrack-bench"
@@ -110,6 +110,19 @@ for p in 1.1 2.1 best; do
   stages=$(sed -n 's/.*(\(.*\)).*/\1/p' <<<"$line")
   speed_rows+="| $p | $med | $stages |"$'\n'
   size_line=$(sed -n 's/.*tracker sizeof \([0-9]*\) B.*/\1/p' <<<"$line")
+done
+# While lost a frame costs more (the whole image's tables, the template's scan, fresh
+# windows anywhere): best's update time by state on two scenes where the target is away.
+lost_rows=""
+for sc in leave-return occlusion; do
+  csv="$OUT/lost-$sc.csv"
+  "$BUILD/bin/cuetrack" --source "synth:$sc" --config best --seed 1 --quiet --out "$csv" >/dev/null 2>&1 ||
+    { echo "benchmarks.sh: cuetrack --source synth:$sc failed" >&2; status=1; continue; }
+  lost_rows+=$(awk -F, 'NR > 2 { print (($3 == "lost" || $3 == "searching") ? "lost" : "tracking"), $14 }' "$csv" |
+    sort -k1,1 -k2,2n | awk -v sc="$sc" '{ v[$1] = v[$1] " " $2; n[$1]++ }  # frame 0: the set-up
+      END { for (k in n) { split(substr(v[k], 2), a, " ")
+        printf "| %s | %s | %d | %d | %d |\n", sc, k, n[k], a[int((n[k] + 1) / 2)], a[n[k]] } }' | sort)
+  lost_rows+=$'\n'
 done
 micro=$("$BUILD/bin/cuetrack-microbench" --runs 200 2>&1 || true)
 
@@ -273,6 +286,15 @@ page="$OUT/benchmarks.md"
   echo "| preset | median µs / frame | stages (µs) |"
   echo "|---|---:|---|"
   printf '%s' "$speed_rows"
+  echo
+  echo "While lost, a frame costs more: the integral tables cover the whole image, the"
+  echo "correlation template searches 3 tiles of it (each 3 x 3 sides of the last window), and"
+  echo "half the particles are fresh windows anywhere. best's update time by state, seed 1 (µs;"
+  echo "\`cuetrack --source synth:SCENE --out F.csv\`, column proc_us):"
+  echo
+  echo "| scene | state | frames | median µs | max µs |"
+  echo "|---|---|---:|---:|---:|"
+  printf '%s' "$lost_rows"
   echo
   if [ -n "$arm_rows" ]; then
     echo "On aarch64, exact instructions per frame (qemu-user with the qemu-icount plugin; 50 frames"

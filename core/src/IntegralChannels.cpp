@@ -21,6 +21,14 @@ PixelRect clipBox(const Box& b, int w, int h) {
   return r;
 }
 
+IntegralChannels::IntegralChannels() {
+  std::memset(_gray, 0, sizeof(_gray));
+  std::memset(_alpha2, 0, sizeof(_alpha2));
+  std::memset(_beta, 0, sizeof(_beta));
+  std::memset(_depth, 0, sizeof(_depth));
+  std::memset(_count, 0, sizeof(_count));
+}
+
 void IntegralChannels::compute(const Frame& frame, const PixelRect& roi, bool useDepth) {
   const int w = roi.width(), h = roi.height();
   const int stride = w + 1;

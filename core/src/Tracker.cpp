@@ -132,6 +132,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _rng.reseed(_seed);
   _lost.reset();
   _lostFrames = 0;
+  _scanTile = 0;
 
   Particle q;
   if (_is3d) {
@@ -238,6 +239,8 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
                 _imageW, _imageH);
   if (_config.correlationCue && !wasLost && _corr.ready())
     roi = unite(roi, clipBox(CorrelationCue::region(_lastBox), _imageW, _imageH));
+  // Lost: the template searches the whole image, a few tiles a frame.
+  if (_config.correlationCue && wasLost) roi = PixelRect{0, 0, _imageW, _imageH};
   if (roi.width() < 2 || roi.height() < 2) roi = PixelRect{0, 0, _imageW, _imageH};
   return roi;
 }
@@ -307,6 +310,11 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     // cloud drifted onto background) is a miss too, and not learnt.
     miss = (_is3d && !wasLost && !_lost.onProbation() && _depthGuard.jumped(e.particle.p[2])) ||
            PeakContrast::flat(e.contrast);
+    // Found again at under 2/3 or over 1.5 times the depth the target was last confirmed at
+    // (the floor, a wall behind): not the target, which may have moved in depth while
+    // hidden, but not so far.
+    if (_is3d && (wasLost || _lost.onProbation()) && _depthGuard.implausibleFind(e.particle.p[2]))
+      miss = true;
     _state = _lost.step(_state, miss ? 0.f : e.confidence);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
   }
@@ -331,55 +339,91 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   return learned;
 }
 
+void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity) {
+  // One particle in kEvery onto window c: `from` moved there (3D: at its depth on the ray
+  // through c's centre, then onto the surface there), jittered by the 2D position noise.
+  const int n = _filter.size();
+  const float side = fmath::sqrtf(c.w * c.h);
+  const float jitter = tuning::motion2d::kPositionNoise * side;
+  int moved = 0;
+  for (int i = tuning::correlation::kSlot; i < n; i += tuning::correlation::kEvery) {
+    const float u = c.x + 0.5f * c.w + jitter * _rng.gaussianFast();
+    const float v = c.y + 0.5f * c.h + jitter * _rng.gaussianFast();
+    Particle q = from;
+    if (_is3d) {
+      q.p = backProject(_k, u, v, from.p.z());
+      q.v.setZero();
+      if (withVelocity) q.v = (q.p - from.p) / (dtS > 0.f ? dtS : 1.f);
+      q.v.z() = 0.f;
+      keepInView(q, _k, _imageW, _imageH);
+      correctDepth(q, _channels, _k, dtS, _imageW, _imageH);
+    } else {
+      q.p[0] = u;
+      q.p[1] = v;
+      q.v.setZero();
+      if (withVelocity) {
+        q.v[0] = u - from.p[0];  // px per frame
+        q.v[1] = v - from.p[1];
+      }
+      q.size[0] = c.w;
+      q.size[1] = c.h;
+    }
+    _filter[i] = q;
+    _movedIndex[moved] = static_cast<uint16_t>(i);
+    _movedBoxes[moved] = particleBox(q);
+    _boxes[i] = _movedBoxes[moved];
+    const Box& b = _boxes[i];
+    _movedValid[moved] =
+        !b.empty() && b.w >= 4.f && b.h >= 4.f && LostSearch::insideEnough(b, _imageW, _imageH);
+    ++moved;
+  }
+  _strong.evaluateMany(_channels.tables(), _movedBoxes, _movedValid, moved, _movedScores);
+  for (int k = 0; k < moved; ++k)
+    _scores[_movedIndex[k]] = _movedValid[k] != 0 ? _movedScores[k] : -1.f;
+}
+
 void Tracker::correlate(float dtS) {
   _corrActive = false;
   if (!_corr.search(_channels.tables(), _lastBox)) return;
   _corrActive = true;
-  const int n = _filter.size();
   // Some particles onto the peak, when there is one (the target may have jumped where the
-  // cloud did not reach).
-  int moved = 0;
-  if (_corr.peak() >= tuning::correlation::kMinPeak) {
-    const Box c = _corr.peakBox();
-    const float side = fmath::sqrtf(c.w * c.h);
-    const float jitter = tuning::motion2d::kPositionNoise * side;
-    constexpr int every = tuning::correlation::kEvery;
-    for (int i = tuning::correlation::kSlot; i < n; i += every) {
-      const float u = c.x + 0.5f * c.w + jitter * _rng.gaussianFast();
-      const float v = c.y + 0.5f * c.h + jitter * _rng.gaussianFast();
-      Particle q = _prevEstimate;
-      if (_is3d) {
-        q.p = backProject(_k, u, v, _prevEstimate.p.z());
-        q.v = (q.p - _prevEstimate.p) / (dtS > 0.f ? dtS : 1.f);
-        q.v.z() = 0.f;
-        keepInView(q, _k, _imageW, _imageH);
-        correctDepth(q, _channels, _k, dtS, _imageW, _imageH);
-      } else {
-        q.p[0] = u;
-        q.p[1] = v;
-        q.v[0] = u - _prevEstimate.p[0];  // px per frame
-        q.v[1] = v - _prevEstimate.p[1];
-        q.size[0] = c.w;
-        q.size[1] = c.h;
-      }
-      _filter[i] = q;
-      _movedIndex[moved] = static_cast<uint16_t>(i);
-      _movedBoxes[moved] = particleBox(q);
-      _boxes[i] = _movedBoxes[moved];
-      const Box& b = _boxes[i];
-      _movedValid[moved] =
-          !b.empty() && b.w >= 4.f && b.h >= 4.f && LostSearch::insideEnough(b, _imageW, _imageH);
-      ++moved;
-    }
-    _strong.evaluateMany(_channels.tables(), _movedBoxes, _movedValid, moved, _movedScores);
-    for (int k = 0; k < moved; ++k)
-      _scores[_movedIndex[k]] = _movedValid[k] != 0 ? _movedScores[k] : -1.f;
-  }
+  // cloud did not reach), moving on as it jumped.
+  if (_corr.peak() >= tuning::correlation::kMinPeak)
+    drawAt(_corr.peakBox(), _prevEstimate, dtS, true);
+  const int n = _filter.size();
   for (int i = 0; i < n; ++i) {
     const Box& b = _boxes[i];
     _corrScores[i] =
         b.empty() ? CorrelationCue::kNoResponse : _corr.at(b.x + 0.5f * b.w, b.y + 0.5f * b.h);
   }
+}
+
+void Tracker::scanLost(float dtS) {
+  // While lost: the template searched over the image, a few tiles a frame at the last
+  // learnt size, the tiles' best peak (if strong enough) given particles to confirm.
+  if (!_corr.ready()) return;
+  const Box last = particleBox(_lastEstimate);
+  if (last.empty()) return;
+  // A search covers window positions within kReach cells (1.5 sides) of its centre: tiles
+  // 3 sides apart cover the image.
+  constexpr float step =
+      2.f * static_cast<float>(CorrelationCue::kReach) / static_cast<float>(CorrelationCue::kCells);
+  const int nx = 1 + static_cast<int>((static_cast<float>(_imageW) - last.w) / (step * last.w));
+  const int ny = 1 + static_cast<int>((static_cast<float>(_imageH) - last.h) / (step * last.h));
+  const int tiles = nx * ny;
+  float best = tuning::correlation::kMinPeak;
+  Box found{};
+  for (int j = 0; j < tuning::correlation::kScanTilesPerFrame && j < tiles; ++j) {
+    const int t = _scanTile++ % tiles;
+    if (_scanTile >= tiles) _scanTile = 0;
+    const Box around{(0.5f * step + static_cast<float>(t % nx) * step) * last.w,
+                     (0.5f * step + static_cast<float>(t / nx) * step) * last.h, last.w, last.h};
+    if (_corr.search(_channels.tables(), around) && _corr.peak() >= best) {
+      best = _corr.peak();
+      found = _corr.peakBox();
+    }
+  }
+  if (!found.empty()) drawAt(found, _lastEstimate, dtS, false);
 }
 
 void Tracker::correctDepths(float dtS) {
@@ -422,6 +466,7 @@ TrackResult Tracker::update(const Frame& frame) {
   score(roi, wasLost);
   _corrActive = false;
   if (_config.correlationCue && !wasLost) correlate(dtS);
+  if (_config.correlationCue && wasLost) scanLost(dtS);
   Estimate e = estimate();
   const uint64_t t4 = now();
   const bool learned = decide(frame, e, wasLost, roi);

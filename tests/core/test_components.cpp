@@ -44,6 +44,21 @@ TEST_CASE("DepthGuard: a jump off the confirmed depth either way is flagged",
   CHECK(g.confirmedMm() == 2700.f);
 }
 
+TEST_CASE("DepthGuard: a find far off the confirmed depth is not the target",
+          "[core][depthguard]") {
+  DepthGuard g;
+  g.reset(2000.f);
+  // The target may have moved in depth while hidden: a find at 1.4 m or 2.9 m is allowed,
+  // one on the floor or a wall at twice the depth, or something at half of it, is not.
+  CHECK_FALSE(g.implausibleFind(2000.f));
+  CHECK_FALSE(g.implausibleFind(1400.f));
+  CHECK_FALSE(g.implausibleFind(2900.f));
+  CHECK(g.implausibleFind(3100.f));
+  CHECK(g.implausibleFind(4000.f));
+  CHECK(g.implausibleFind(1300.f));
+  CHECK(g.implausibleFind(1000.f));
+}
+
 TEST_CASE("FastMotion: in 2D every 10th particle jumps after a learnt frame only",
           "[core][fastmotion]") {
   FastMotion fm;

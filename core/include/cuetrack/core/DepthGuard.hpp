@@ -2,7 +2,8 @@
 // again; beyond the paper, with `lostDetection`): an estimate well in front of or behind
 // it means the depth correction has put the cloud on something passing in front, or on
 // the background, either of which can look enough like the target to keep the
-// confidence up. That frame counts as a miss and is not learnt.
+// confidence up. That frame counts as a miss and is not learnt. Likewise a find while
+// lost at under 2/3 or over 1.5 times that depth (the floor, a wall behind).
 #pragma once
 
 #include "cuetrack/core/Tuning.hpp"
@@ -16,6 +17,12 @@ class DepthGuard {
   bool jumped(float zMm) const {
     constexpr float r = tuning::depthGuard::kJumpRatio;
     return zMm < r * _confirmedMm || r * zMm > _confirmedMm;
+  }
+  // A candidate found again (while lost, or on probation) at zMm is too far off the
+  // confirmed depth to be the target, which may have moved in depth while hidden.
+  bool implausibleFind(float zMm) const {
+    constexpr float r = tuning::depthGuard::kFoundRatio;
+    return zMm > r * _confirmedMm || _confirmedMm > r * zMm;
   }
   // The estimate at zMm was learnt or found again.
   void confirm(float zMm) { _confirmedMm = zMm; }

@@ -30,6 +30,9 @@ inline PixelRect unite(const PixelRect& a, const PixelRect& b) {
 
 class IntegralChannels {
  public:
+  // Writes every table once: the first frame that needs the whole image (the first one
+  // lost) would otherwise pay for faulting in 6 MB of fresh pages (14 ms on x86).
+  IntegralChannels();
   // Depth tables are all zero (no valid pixel) when the frame has no depth or useDepth is off.
   void compute(const Frame& frame, const PixelRect& roi, bool useDepth);
   const FrameTables& tables() const { return _t; }

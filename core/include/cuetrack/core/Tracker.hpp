@@ -89,7 +89,10 @@ class Tracker {
   void correctDepths(float dtS);                   // 3D: every particle onto the surface
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
   void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
-  Estimate estimate();        // weights and the estimate
+  void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
+  // One particle in correlation::kEvery drawn at window c from `from`, and scored.
+  void drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity);
+  Estimate estimate();  // weights and the estimate
   // Lost detection, the update gate and learning; true when learnt.
   bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi);
 
@@ -125,6 +128,7 @@ class Tracker {
   Particle _prevEstimate{};  // the last frame's estimate (correlate() moves it)
   CorrelationCue _corr;
   bool _corrActive = false;          // this frame's map was searched
+  int _scanTile = 0;                 // scanLost: the next tile
   float _corrScores[kMaxParticles];  // the template's response at each particle
   static constexpr int kMaxMoved = kMaxParticles / tuning::correlation::kEvery + 1;
   uint16_t _movedIndex[kMaxMoved];  // the particles moved onto the peak this frame

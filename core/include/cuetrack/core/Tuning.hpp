@@ -124,12 +124,19 @@ inline constexpr int kSlot = 3;  // ... i % kEvery == kSlot (FastMotion's jumper
 // The template follows the target's appearance on learnt frames at this rate (0.05: 64.3,
 // 0.2: 66.0 with a gain of 6).
 inline constexpr float kLearnRate = 0.1f;
+// While lost, this many tiles of the image (each 3 x 3 sides of the last learnt window,
+// one search() each) are searched a frame: a 640x480 image in 2-10 frames.
+inline constexpr int kScanTilesPerFrame = 3;
 }  // namespace correlation
 
 namespace depthGuard {  // 3D, lostDetection
 // The estimate's depth over the last confirmed one (or its inverse) below this: the cloud
 // has jumped onto something in front or behind; a miss, and not learnt.
 inline constexpr float kJumpRatio = 0.75f;
+// Found again nearer than 1 / kFoundRatio or farther than kFoundRatio times the confirmed
+// depth: the search has found the floor or a wall behind (issue 30's leave-return and the
+// real-still occlusion found textures at twice the depth), not the target.
+inline constexpr float kFoundRatio = 1.5f;
 }  // namespace depthGuard
 
 }  // namespace cuetrack::tuning
