@@ -310,9 +310,9 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     // cloud drifted onto background) is a miss too, and not learnt.
     miss = (_is3d && !wasLost && !_lost.onProbation() && _depthGuard.jumped(e.particle.p[2])) ||
            PeakContrast::flat(e.contrast);
-    // Found again at under 2/3 or over 1.5 times the depth the target was last confirmed at
-    // (the floor, a wall behind): not the target, which may have moved in depth while
-    // hidden, but not so far.
+    // Found again at under 3/4 or over 4/3 of the depth the target was last confirmed at
+    // (the floor, a wall behind, a look-alike in front): not the target, which may have
+    // moved in depth while hidden, but not so far.
     if (_is3d && (wasLost || _lost.onProbation()) && _depthGuard.implausibleFind(e.particle.p[2]))
       miss = true;
     _state = _lost.step(_state, miss ? 0.f : e.confidence);

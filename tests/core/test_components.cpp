@@ -48,14 +48,14 @@ TEST_CASE("DepthGuard: a find far off the confirmed depth is not the target",
           "[core][depthguard]") {
   DepthGuard g;
   g.reset(2000.f);
-  // The target may have moved in depth while hidden: a find at 1.4 m or 2.9 m is allowed,
-  // one on the floor or a wall at twice the depth, or something at half of it, is not.
+  // The target may have moved in depth while hidden: a find at 1.6 m or 2.6 m is allowed,
+  // one on the floor or a wall at twice the depth, or on a look-alike at 1.4 m, is not.
   CHECK_FALSE(g.implausibleFind(2000.f));
-  CHECK_FALSE(g.implausibleFind(1400.f));
-  CHECK_FALSE(g.implausibleFind(2900.f));
-  CHECK(g.implausibleFind(3100.f));
+  CHECK_FALSE(g.implausibleFind(1600.f));
+  CHECK_FALSE(g.implausibleFind(2600.f));
+  CHECK(g.implausibleFind(2700.f));
   CHECK(g.implausibleFind(4000.f));
-  CHECK(g.implausibleFind(1300.f));
+  CHECK(g.implausibleFind(1400.f));
   CHECK(g.implausibleFind(1000.f));
 }
 

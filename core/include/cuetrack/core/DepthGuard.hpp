@@ -3,7 +3,7 @@
 // it means the depth correction has put the cloud on something passing in front, or on
 // the background, either of which can look enough like the target to keep the
 // confidence up. That frame counts as a miss and is not learnt. Likewise a find while
-// lost at under 2/3 or over 1.5 times that depth (the floor, a wall behind).
+// lost at under 3/4 or over 4/3 of that depth (the floor, a wall behind).
 #pragma once
 
 #include "cuetrack/core/Tuning.hpp"
