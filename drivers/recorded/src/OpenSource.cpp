@@ -88,8 +88,7 @@ bool frameSourcesHaveOpenCv() {
 }
 
 const char* frameSourceHelp() {
-  return "  synth:<scene>[:frames]   synthetic RGB-D scene (moving, twin-crossing, occlusion,\n"
-         "                           untextured, lighting, approach, box, turn)\n"
+  return "  synth:<scene>[:frames]   synthetic RGB-D scene (cuetrack-synth --list)\n"
          "  <dir>/ with INDEX.txt    fakenect recording (+ groundtruth.txt, BoBoT format)\n"
          "  <dir>/ with rgb/ depth/  RGB-D folder (+ groundtruth.txt, intrinsics.txt)  [OpenCV]\n"
          "  <dir>/ with img/         OTB folder (+ groundtruth_rect.txt)                [OpenCV]\n"
