@@ -193,8 +193,9 @@ page="$OUT/benchmarks.md"
   echo
   if [ $have_shared = 1 ]; then
     echo "Every tracking change is judged here (docs/algorithm.md): 13 real videos of"
-    echo "\`../shared/data/otb\` (OTB, VOT, UAV123, UAVDT), BoBoT C, E and H, and the ${#SCENES[@]} synthetic"
-    echo "RGB-D scenes; cuetrack 5 seeds, the OpenCV trackers once (they are deterministic). Mean"
+    echo "\`../shared/data/otb\` (OTB, VOT, UAV123, UAVDT), BoBoT C, E and H, the ${#SCENES[@]} synthetic"
+    echo "RGB-D scenes and ${#still_seqs[@]} synthetic targets in real Kinect stills (\`still:\`); cuetrack 5"
+    echo "seeds, the OpenCV trackers once (they are deterministic). Mean"
     echo "overlap [%] per sequence; the last column is best minus 1.1, \`*\` where it exceeds the"
     echo "seed-to-seed spread. Command:"
     echo
