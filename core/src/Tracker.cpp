@@ -252,6 +252,7 @@ void Tracker::score(const PixelRect& roi, bool wasLost) {
     _valid[i] = !b.empty() && b.w >= 4.f && b.h >= 4.f && b.x + b.w > 0.f && b.y + b.h > 0.f &&
                 b.x < static_cast<float>(_imageW) && b.y < static_cast<float>(_imageH);
     if (wasLost && _valid[i] != 0) _valid[i] = LostSearch::insideEnough(b, _imageW, _imageH);
+    if (wasLost && _valid[i] != 0 && implausibleWhileLost(_filter[i])) _valid[i] = 0;
   }
   _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores,
                        _scanOrder.sort(_boxes, n, roi.y0));
@@ -373,8 +374,9 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
     _movedBoxes[moved] = particleBox(q);
     _boxes[i] = _movedBoxes[moved];
     const Box& b = _boxes[i];
-    _movedValid[moved] =
-        !b.empty() && b.w >= 4.f && b.h >= 4.f && LostSearch::insideEnough(b, _imageW, _imageH);
+    _movedValid[moved] = !b.empty() && b.w >= 4.f && b.h >= 4.f &&
+                         LostSearch::insideEnough(b, _imageW, _imageH) &&
+                         !(_state == TrackState::Lost && implausibleWhileLost(q));
     ++moved;
   }
   _strong.evaluateMany(_channels.tables(), _movedBoxes, _movedValid, moved, _movedScores);

@@ -192,9 +192,9 @@ TEST_CASE("best in 3D keeps a target seen at 7.5 fps", "[core][e2e]") {
 TEST_CASE("best follows a target crossing the frame at 40 px a frame", "[core][e2e]") {
   // The fast scene: a 40 px wide target moving 40 px a frame, turning every 12 frames. The
   // particles' motion noise does not reach where it is next; the correlation cue's map
-  // (1.5 sides around the last estimate) does. Seeds 1-5: best keeps it in 3 (hit rates
-  // 1.0, 0.84, 1.0; the other two lose it at a turn by the image's edge), the control, best
-  // without the cue, in none (0.0-0.37, mean 0.19). Under qemu one seed, 60 frames.
+  // (1.5 sides around the last estimate) does. Seeds 1-5: best keeps it in all five (hit
+  // rates 0.93-1.0, mean 0.96); the control, best without the cue, 0.52-0.68 (mean 0.59).
+  // Under qemu one seed, 60 frames.
   const int seeds = emulated() ? 1 : sanitized() ? 2 : 5;
   const int frames = emulated() ? 60 : 150;
   TrackerConfig control = presetConfig(Preset::Best);
@@ -213,16 +213,19 @@ TEST_CASE("best follows a target crossing the frame at 40 px a frame", "[core][e
   }
   INFO("mean hit rate " << bestHits << " with, " << controlHits << " without; " << kept << " of "
                         << seeds << " seeds kept");
-  CHECK(bestHits >= controlHits + 0.3f);
-  CHECK(kept >= (seeds + 1) / 2);
+  CHECK(bestHits >= 0.9f);
+  CHECK(bestHits >= controlHits + 0.25f);
+  CHECK(kept >= seeds - 1);
 }
 
 TEST_CASE("best finds a target again that comes back elsewhere", "[core][e2e]") {
   // The leave-return scene: the target leaves the view on the right at about frame 45 and
-  // comes back from the left 30 frames later, fully in view from about frame 90. Seeds
-  // 1-12: found again and held from frame 110 on in 10 (in seeds 3 and 10 the search
-  // confirms a patch of the wall while the target is away, and keeps it; without the
-  // correlation template's scan of the image, 9). Under qemu one seed.
+  // comes back from the left 30 frames later, fully in view from about frame 90. While
+  // lost, the correlation template searches the whole image, and search windows on a
+  // surface far off the target's depth (the wall, the floor) are not scored. Seeds 1-12:
+  // found again and held from frame 110 on in all 12 (without the depth check on search
+  // windows, 10: two seeds confirmed a patch of the wall while the target was away).
+  // Under qemu one seed.
   constexpr int kAfter = 110;
   const uint64_t seeds = emulated() ? 1 : sanitized() ? 2 : 12;
   int found = 0;
@@ -235,7 +238,7 @@ TEST_CASE("best finds a target again that comes back elsewhere", "[core][e2e]") 
     found += after >= 0.9f ? 1 : 0;
   }
   INFO(found << " of " << seeds << " seeds found the target again");
-  CHECK(found >= (seeds >= 12 ? 9 : static_cast<int>(seeds)));
+  CHECK(found >= (seeds >= 12 ? 11 : static_cast<int>(seeds)));
 }
 
 TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2e]") {
@@ -263,10 +266,9 @@ TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2
 TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core][e2e]") {
   // The box hides the target completely from about frame 67 to 90; from frame 96 on it
   // is in full view again. Without re-acquisition the tracker never finds it again.
-  // Re-acquisition is a search: one seed finds the target at frame 98, another at 137.
-  // Over seeds 1-20 the hit rate after frame 100 is 0.80 (0.79 without the correlation
-  // cue); over 1-10, 0.70 (0.93 without it), over 11-20 0.90 (0.66): so the mean of ten
-  // seeds is held to 0.6. Under qemu one seed each side, found again at all.
+  // Seeds 1-10: hit rate after frame 100 0.94-1.0, mean 0.99 (0.80 over seeds 1-20 before
+  // the search while lost kept off surfaces far from the target's depth). Under qemu one
+  // seed each side.
   constexpr int kAfter = 100;
   const uint64_t seeds = emulated() ? 1 : sanitized() ? 5 : 10;
   float sum = 0.f;
@@ -280,7 +282,7 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
     sum += after;
   }
   INFO("mean hit rate after frame " << kAfter << ": " << sum / static_cast<float>(seeds));
-  CHECK(sum / static_cast<float>(seeds) >= (seeds >= 10 ? 0.6f : seeds >= 5 ? 0.5f : 0.1f));
+  CHECK(sum / static_cast<float>(seeds) >= (seeds >= 5 ? 0.9f : 0.5f));
   // Control: the same seeds without lost detection (and so without re-acquisition).
   TrackerConfig noLost = presetConfig(Preset::Best);
   noLost.lostDetection = false;
