@@ -155,9 +155,10 @@ TEST_CASE("best in 2D keeps a target that moves twice as far per frame", "[core]
 
 TEST_CASE("best in 3D keeps a target seen at 7.5 fps", "[core][e2e]") {
   // The moving scene given every fourth frame (7.5 fps, with depth): the AR(1) model
-  // does not reach where the target is next. The fast-motion particles alone keep it: the
-  // control, best without them and without the correlation cue (which keeps it too),
-  // loses it in about half the runs; at 30 fps the two are the same bit for bit.
+  // does not reach where the target is next. Seeds 1-8: best keeps it in every frame; the
+  // fast-motion particles alone (no correlation cue) 0.77-1.0, mean 0.92; without either
+  // 0.50-0.73, mean 0.61 (seeds 1-2, as under the sanitizers: 0.98 against 0.70). At 30 fps
+  // the two are the same bit for bit.
   TrackerConfig fastOnly = presetConfig(Preset::Best);
   fastOnly.correlationCue = false;
   TrackerConfig control = fastOnly;
@@ -181,9 +182,9 @@ TEST_CASE("best in 3D keeps a target seen at 7.5 fps", "[core][e2e]") {
   }
   INFO("mean hit rate " << bestHits << " best, " << onHits << " with fast motion alone, "
                         << controlHits << " without either");
-  REQUIRE(bestHits >= 0.9f);
+  REQUIRE(bestHits >= 0.95f);
   REQUIRE(onHits >= 0.9f);
-  REQUIRE(controlHits <= onHits - 0.3f);
+  REQUIRE(controlHits <= onHits - 0.2f);
   const Stats a = runMoving(fastOnly, 3, 20, 1, false);
   const Stats b = runMoving(control, 3, 20, 1, false);
   REQUIRE(a.overlapSum == b.overlapSum);
