@@ -353,9 +353,12 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
     Particle q = from;
     if (_is3d) {
       q.p = backProject(_k, u, v, from.p.z());
-      q.v.setZero();
-      if (withVelocity) q.v = (q.p - from.p) / (dtS > 0.f ? dtS : 1.f);
-      q.v.z() = 0.f;
+      // Component by component with 1 / dt: Eigen's vector-by-scalar quotient runs on
+      // NEON's reciprocal estimate on armhf, and the tracks would differ there.
+      const float invDt = withVelocity && dtS > 0.f ? 1.f / dtS : 0.f;
+      q.v[0] = (q.p[0] - from.p[0]) * invDt;
+      q.v[1] = (q.p[1] - from.p[1]) * invDt;
+      q.v[2] = 0.f;
       keepInView(q, _k, _imageW, _imageH);
       correctDepth(q, _channels, _k, dtS, _imageW, _imageH);
     } else {
