@@ -44,17 +44,29 @@ bool CorrelationCue::cells(const FrameTables& t, const Box& win, float* out) {
   return true;
 }
 
+bool CorrelationCue::normalise() {
+  // The NCC is then the unit template's dot product with a patch over the patch's spread.
+  constexpr int n = kCells * kCells;
+  float mean = 0.f;
+  for (float v : _template) mean += v;
+  mean /= static_cast<float>(n);
+  float norm = 0.f;
+  for (int i = 0; i < n; ++i) {
+    _unit[i] = _template[i] - mean;
+    norm += _unit[i] * _unit[i];
+  }
+  _flat = !(norm > kMinSpread);
+  if (_flat) return false;
+  norm = fmath::sqrtf(norm);
+  for (float& v : _unit) v /= norm;
+  return true;
+}
+
 bool CorrelationCue::reset(const FrameTables& t, const Box& win) {
   _ready = false;
   _searched = false;
   _peak = kNoResponse;
-  if (!cells(t, win, _template)) return false;
-  float mean = 0.f;
-  for (float v : _template) mean += v;
-  mean /= static_cast<float>(kCells * kCells);
-  float var = 0.f;
-  for (float v : _template) var += (v - mean) * (v - mean);
-  _ready = var > kMinSpread;
+  _ready = cells(t, win, _template) && normalise();
   return _ready;
 }
 
@@ -62,36 +74,24 @@ void CorrelationCue::learn(const FrameTables& t, const Box& win, float rate) {
   float now[kCells * kCells];
   if (!_ready || !cells(t, win, now)) return;
   for (int i = 0; i < kCells * kCells; ++i) _template[i] += rate * (now[i] - _template[i]);
+  normalise();
 }
 
 bool CorrelationCue::search(const FrameTables& t, const Box& around) {
   _searched = false;
   _peak = kNoResponse;
-  if (!_ready || around.empty()) return false;
+  if (!_ready || _flat || around.empty()) return false;
   constexpr int n = kCells * kCells;
-  // The template, zero-mean and of unit norm: the NCC is then its dot product with the
-  // patch over the patch's spread.
-  float tz[n];
-  float mean = 0.f;
-  for (float v : _template) mean += v;
-  mean /= static_cast<float>(n);
-  float norm = 0.f;
-  for (int i = 0; i < n; ++i) {
-    tz[i] = _template[i] - mean;
-    norm += tz[i] * tz[i];
-  }
-  if (!(norm > kMinSpread)) return false;
-  norm = fmath::sqrtf(norm);
-  for (float& v : tz) v /= norm;
+  const float* tz = _unit;
 
   _cellW = around.w / static_cast<float>(kCells);
   _cellH = around.h / static_cast<float>(kCells);
   _originX = around.x - static_cast<float>(kReach) * _cellW;
   _originY = around.y - static_cast<float>(kReach) * _cellH;
-  float* grid = _grid;
-  double* sum = _sum;
-  double* sumSq = _sumSq;
-  int* off = _off;
+  float* const grid = _grid;  // short names for the index arithmetic below
+  double* const sum = _sum;
+  double* const sumSq = _sumSq;
+  int* const off = _off;
   constexpr int s = kStride;
   for (int i = 0; i < s; ++i) {
     sum[i] = sumSq[i] = 0.0;
@@ -156,6 +156,10 @@ float CorrelationCue::at(float u, float v) const {
   // Offset (ox, oy) puts a window's centre at origin + (o + kCells / 2) cells.
   const float fx = (u - _originX) / _cellW - 0.5f * static_cast<float>(kCells);
   const float fy = (v - _originY) / _cellH - 0.5f * static_cast<float>(kCells);
+  // Off the map (or NaN) before the conversion: a float beyond int's range converts
+  // differently on x86 and ARM.
+  constexpr float lim = static_cast<float>(kOffsets);
+  if (!(fx > -1.f && fx < lim && fy > -1.f && fy < lim)) return kNoResponse;
   const int ox = roundPx(fx), oy = roundPx(fy);
   if (ox < 0 || oy < 0 || ox >= kOffsets || oy >= kOffsets) return kNoResponse;
   return _response[oy * kOffsets + ox];

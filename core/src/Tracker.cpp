@@ -245,15 +245,20 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
   return roi;
 }
 
+bool Tracker::scorable(const Box& b, const Particle& q, bool searching) const {
+  if (b.empty() || b.w < 4.f || b.h < 4.f) return false;
+  if (!searching)
+    return b.x + b.w > 0.f && b.y + b.h > 0.f && b.x < static_cast<float>(_imageW) &&
+           b.y < static_cast<float>(_imageH);
+  // While lost, a window must see most of the target to re-detect it (LostSearch), and
+  // in 3D stand near the depth the target was last confirmed at.
+  return LostSearch::insideEnough(b, _imageW, _imageH) &&
+         !(_is3d && _config.lostDetection && _depthGuard.implausibleFind(q.p[2]));
+}
+
 void Tracker::score(const PixelRect& roi, bool wasLost) {
   const int n = _filter.size();
-  for (int i = 0; i < n; ++i) {
-    const Box& b = _boxes[i];
-    _valid[i] = !b.empty() && b.w >= 4.f && b.h >= 4.f && b.x + b.w > 0.f && b.y + b.h > 0.f &&
-                b.x < static_cast<float>(_imageW) && b.y < static_cast<float>(_imageH);
-    if (wasLost && _valid[i] != 0) _valid[i] = LostSearch::insideEnough(b, _imageW, _imageH);
-    if (wasLost && _valid[i] != 0 && implausibleWhileLost(_filter[i])) _valid[i] = 0;
-  }
+  for (int i = 0; i < n; ++i) _valid[i] = scorable(_boxes[i], _filter[i], wasLost) ? 1 : 0;
   _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores,
                        _scanOrder.sort(_boxes, n, roi.y0));
 }
@@ -376,10 +381,11 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
     _movedIndex[moved] = static_cast<uint16_t>(i);
     _movedBoxes[moved] = particleBox(q);
     _boxes[i] = _movedBoxes[moved];
-    const Box& b = _boxes[i];
-    _movedValid[moved] = !b.empty() && b.w >= 4.f && b.h >= 4.f &&
-                         LostSearch::insideEnough(b, _imageW, _imageH) &&
-                         !(_state == TrackState::Lost && implausibleWhileLost(q));
+    // Mostly inside the image even while tracking, as the template's peaks are.
+    _movedValid[moved] = scorable(_boxes[i], q, _state == TrackState::Lost) &&
+                                 LostSearch::insideEnough(_boxes[i], _imageW, _imageH)
+                             ? 1
+                             : 0;
     ++moved;
   }
   _strong.evaluateMany(_channels.tables(), _movedBoxes, _movedValid, moved, _movedScores);
@@ -388,7 +394,6 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
 }
 
 void Tracker::correlate(float dtS) {
-  _corrActive = false;
   if (!_corr.search(_channels.tables(), _lastBox)) return;
   _corrActive = true;
   // Some particles onto the peak, when there is one (the target may have jumped where the

@@ -55,9 +55,13 @@ class CorrelationCue {
  private:
   // Mean gray of the window's cells into out[kCells * kCells]; false if any is off the tables.
   static bool cells(const FrameTables& t, const Box& win, float* out);
+  // _unit from _template; false (and _flat) when the template is flat.
+  bool normalise();
 
   float _template[kCells * kCells]{};
-  bool _ready = false;
+  float _unit[kCells * kCells]{};  // the template, zero-mean and of unit norm
+  bool _ready = false;             // reset() read a whole window that was not flat
+  bool _flat = false;              // the template (since learnt) is flat: nothing to match
   // The last search: its grid origin and cell size [px], and the response per offset.
   float _originX = 0.f, _originY = 0.f, _cellW = 1.f, _cellH = 1.f;
   float _response[kOffsets * kOffsets]{};

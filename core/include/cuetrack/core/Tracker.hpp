@@ -92,12 +92,11 @@ class Tracker {
   void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
   // One particle in correlation::kEvery drawn at window c from `from`, and scored.
   void drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity);
-  // While lost in 3D: a search window on a surface too far off the confirmed depth to be
-  // the target (DepthGuard::implausibleFind) is not scored, so the cloud does not gather
-  // on a look-alike or a texture there that it could never confirm.
-  bool implausibleWhileLost(const Particle& q) const {
-    return _is3d && _config.lostDetection && _depthGuard.implausibleFind(q.p[2]);
-  }
+  // Whether particle q's window b is scored (else -1). While searching (lost) it must lie
+  // mostly inside the image and, in 3D, not on a surface too far off the confirmed depth
+  // (DepthGuard::implausibleFind): the cloud would gather on a look-alike or a texture
+  // there that it could never confirm.
+  bool scorable(const Box& b, const Particle& q, bool searching) const;
   Estimate estimate();  // weights and the estimate
   // Lost detection, the update gate and learning; true when learnt.
   bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi);
