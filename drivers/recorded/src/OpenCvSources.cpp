@@ -705,6 +705,46 @@ bool parseFloat(const std::string& s, float* out) {
   return true;
 }
 
+// The comma-separated fields of s.
+std::vector<std::string> splitFields(const std::string& s) {
+  std::vector<std::string> f;
+  for (size_t start = 0;;) {
+    const size_t comma = s.find(',', start);
+    f.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) return f;
+    start = comma + 1;
+  }
+}
+
+// f[first..] as numbers into out[0..], named by names[] in the error of the first that is
+// not one.
+bool parseNumbers(const std::vector<std::string>& f, size_t first, float* out,
+                  const char* const* names, const char* spec, char* err, size_t errLen) {
+  for (size_t i = first; i < f.size(); ++i) {
+    if (!parseFloat(f[i], &out[i - first])) {
+      std::snprintf(err, errLen, "%s: %s '%s' is not a number", spec, names[i - first],
+                    f[i].c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
+// A still's label for sequence names: the folder above color/ or rgb/ (or its own
+// folder) and the image's stem, e.g. nyu-joinmap-5.
+std::string stillLabel(const std::string& rgbPath) {
+  const auto lastPart = [](const std::string& p) {
+    const size_t k = p.find_last_of('/');
+    return k == std::string::npos ? p : p.substr(k + 1);
+  };
+  const size_t slash = rgbPath.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? std::string() : rgbPath.substr(0, slash);
+  std::string folder = lastPart(dir);
+  if ((folder == "color" || folder == "rgb") && dir.find('/') != std::string::npos)
+    folder = lastPart(dir.substr(0, dir.find_last_of('/')));
+  return (folder.empty() ? std::string() : folder + "-") + stem(rgbPath);
+}
+
 // The part of a inside b (empty when they do not meet).
 Box intersectBox(const Box& a, const Box& b) {
   const float x0 = std::max(a.x, b.x), y0 = std::max(a.y, b.y);
@@ -737,13 +777,7 @@ bool StillPanReader::open(const char* spec, const SourceOptions& opt) {
     }
     body = body.substr(0, colon);
   }
-  std::vector<std::string> f;
-  for (size_t start = 0;;) {
-    const size_t comma = body.find(',', start);
-    f.push_back(body.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  const std::vector<std::string> f = splitFields(body);
   if (f.size() != 10 && f.size() != 11) {
     std::snprintf(_error, sizeof _error,
                   "%s: expected pan:RGB,DEPTH,x,y,w,h,fx,fy,cx,cy[,mmPerUnit][:frames] "
@@ -753,13 +787,7 @@ bool StillPanReader::open(const char* spec, const SourceOptions& opt) {
   }
   float v[9] = {0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 1.f};
   static const char* const kField[9] = {"x", "y", "w", "h", "fx", "fy", "cx", "cy", "mmPerUnit"};
-  for (size_t i = 2; i < f.size(); ++i) {
-    if (!parseFloat(f[i], &v[i - 2])) {
-      std::snprintf(_error, sizeof _error, "%s: %s '%s' is not a number", spec, kField[i - 2],
-                    f[i].c_str());
-      return false;
-    }
-  }
+  if (!parseNumbers(f, 2, v, kField, spec, _error, sizeof _error)) return false;
   if (!(v[2] > 0.f) || !(v[3] > 0.f) || !(v[4] > 0.f) || !(v[5] > 0.f) || !(v[8] > 0.f)) {
     std::snprintf(_error, sizeof _error, "%s: w, h, fx, fy and mmPerUnit must be positive", spec);
     return false;
@@ -767,20 +795,11 @@ bool StillPanReader::open(const char* spec, const SourceOptions& opt) {
   if (opt.maxFrames >= 0 && opt.maxFrames < _frames) _frames = opt.maxFrames;
   const std::string& rgbPath = f[0];
   const std::string& depthPath = f[1];
-  // Name: the still's folder (above color/ or rgb/), its stem and the box's corner, e.g.
-  // pan-nyu-joinmap-5-302-102: two targets of one still get two names.
-  const auto lastPart = [](const std::string& p) {
-    const size_t k = p.find_last_of('/');
-    return k == std::string::npos ? p : p.substr(k + 1);
-  };
-  const size_t slash = rgbPath.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? std::string() : rgbPath.substr(0, slash);
-  std::string folder = lastPart(dir);
-  if ((folder == "color" || folder == "rgb") && dir.find('/') != std::string::npos)
-    folder = lastPart(dir.substr(0, dir.find_last_of('/')));
+  // Name: the still's label and the box's corner, e.g. pan-nyu-joinmap-5-302-102: two
+  // targets of one still get two names.
   char corner[48];
   std::snprintf(corner, sizeof corner, "-%ld-%ld", std::lround(v[0]), std::lround(v[1]));
-  _name = "pan-" + (folder.empty() ? std::string() : folder + "-") + stem(rgbPath) + corner;
+  _name = "pan-" + stillLabel(rgbPath) + corner;
 
   const cv::Mat bgr = cv::imread(rgbPath, kColourRead);
   if (bgr.empty()) {
@@ -926,17 +945,8 @@ bool StillSceneReader::open(const char* spec, const SourceOptions& opt) {
     }
     place = place.substr(0, framesColon);
   }
-  const auto split = [](const std::string& s) {
-    std::vector<std::string> f;
-    for (size_t start = 0;;) {
-      const size_t comma = s.find(',', start);
-      f.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-      if (comma == std::string::npos) return f;
-      start = comma + 1;
-    }
-  };
-  const std::vector<std::string> f = split(body.substr(0, sceneColon));
-  const std::vector<std::string> p = split(place);
+  const std::vector<std::string> f = splitFields(body.substr(0, sceneColon));
+  const std::vector<std::string> p = splitFields(place);
   if ((f.size() != 6 && f.size() != 7) || p.size() != 3) {
     std::snprintf(_error, sizeof _error, "%s: expected %s (%zu still fields, %zu placement fields)",
                   spec, kSyntax, f.size(), p.size());
@@ -944,22 +954,11 @@ bool StillSceneReader::open(const char* spec, const SourceOptions& opt) {
   }
   float k[5] = {0.f, 0.f, 0.f, 0.f, 1.f};
   static const char* const kField[5] = {"fx", "fy", "cx", "cy", "mmPerUnit"};
-  for (size_t i = 2; i < f.size(); ++i) {
-    if (!parseFloat(f[i], &k[i - 2])) {
-      std::snprintf(_error, sizeof _error, "%s: %s '%s' is not a number", spec, kField[i - 2],
-                    f[i].c_str());
-      return false;
-    }
-  }
   float uvGap[3] = {0.f, 0.f, 0.f};
   static const char* const kPlaceField[3] = {"u", "v", "gapMm"};
-  for (size_t i = 0; i < 3; ++i) {
-    if (!parseFloat(p[i], &uvGap[i])) {
-      std::snprintf(_error, sizeof _error, "%s: %s '%s' is not a number", spec, kPlaceField[i],
-                    p[i].c_str());
-      return false;
-    }
-  }
+  if (!parseNumbers(f, 2, k, kField, spec, _error, sizeof _error) ||
+      !parseNumbers(p, 0, uvGap, kPlaceField, spec, _error, sizeof _error))
+    return false;
   if (!(k[0] > 0.f) || !(k[1] > 0.f) || !(k[4] > 0.f)) {
     std::snprintf(_error, sizeof _error, "%s: fx, fy and mmPerUnit must be positive", spec);
     return false;
@@ -1007,22 +1006,11 @@ bool StillSceneReader::open(const char* spec, const SourceOptions& opt) {
     std::snprintf(_error, sizeof _error, "%s: %s", spec, why);
     return false;
   }
-  // Named by the still's folder, its stem, the scene and the pixel, e.g.
+  // Named by the still's label, the scene and the pixel, e.g.
   // still-tum-fr1-1-flat-turn-250-170.
-  const std::string& rgbPath = f[0];
-  const auto lastPart = [](const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? path : path.substr(slash + 1);
-  };
-  const size_t slash = rgbPath.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? std::string() : rgbPath.substr(0, slash);
-  std::string folder = lastPart(dir);
-  if ((folder == "color" || folder == "rgb") && dir.find('/') != std::string::npos)
-    folder = lastPart(dir.substr(0, dir.find_last_of('/')));
   char pixel[48];
   std::snprintf(pixel, sizeof pixel, "-%ld-%ld", std::lround(uvGap[0]), std::lround(uvGap[1]));
-  _name = "still-" + (folder.empty() ? std::string() : folder + "-") + stem(rgbPath) + "-" + scene +
-          pixel;
+  _name = "still-" + stillLabel(f[0]) + "-" + scene + pixel;
   std::snprintf(s.name, sizeof s.name, "%s", _name.c_str());
   _scene = std::make_unique<SyntheticSource>(s, opt.seed);
   if (_scene->error()[0]) {
