@@ -27,6 +27,9 @@ struct Stats {
   float hitRate() const {
     return frames ? static_cast<float>(hits) / static_cast<float>(frames) : 0.f;
   }
+  float hitRateAfter() const {
+    return framesAfter ? static_cast<float>(hitsAfter) / static_cast<float>(framesAfter) : 0.f;
+  }
 };
 
 // stride > 1: only every stride-th frame reaches the tracker (a slower camera: the
@@ -232,7 +235,7 @@ TEST_CASE("best finds a target again that comes back elsewhere", "[core][e2e]") 
   int found = 0;
   for (uint64_t seed = 1; seed <= seeds; ++seed) {
     const Stats s = runScene("leave-return", presetConfig(Preset::Best), seed, 150, kAfter);
-    const float after = static_cast<float>(s.hitsAfter) / static_cast<float>(s.framesAfter);
+    const float after = s.hitRateAfter();
     INFO("seed " << seed << ": hit rate after frame " << kAfter << " " << after);
     CHECK(s.allocations == 0);
     CHECK(s.lostWhileHidden >= 10);  // it knows the target is gone
@@ -275,7 +278,7 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
   float sum = 0.f;
   for (uint64_t seed = 1; seed <= seeds; ++seed) {
     const Stats s = runScene("occlusion", presetConfig(Preset::Best), seed, 150, kAfter);
-    const float after = static_cast<float>(s.hitsAfter) / static_cast<float>(s.framesAfter);
+    const float after = s.hitRateAfter();
     INFO("seed " << seed << ": hit rate " << s.hitRate() << ", after frame " << kAfter << " "
                  << after << ", lost while hidden " << s.lostWhileHidden);
     CHECK(s.lostWhileHidden >= 10);  // it knows the target is gone
@@ -292,7 +295,7 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
   float sumNoLost = 0.f;
   for (uint64_t seed = 1; seed <= controlSeeds; ++seed) {
     const Stats n = runScene("occlusion", noLost, seed, 150, kAfter);
-    sumNoLost += static_cast<float>(n.hitsAfter) / static_cast<float>(n.framesAfter);
+    sumNoLost += n.hitRateAfter();
   }
   const float meanNoLost = sumNoLost / static_cast<float>(controlSeeds);
   INFO("without lost detection, mean hit rate after frame " << kAfter << ": " << meanNoLost);
