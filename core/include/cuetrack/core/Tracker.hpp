@@ -50,9 +50,9 @@ const char* toString(InitError e);
 
 // The members are components (particle filter, observation model, feature pool,
 // training set, negative sampler, update gate and lost detector, and the beyond-the-paper
-// cylinder sizer, size filter, lost search, depth guard and fast motion), each a fixed-size class
-// of its own with its own tests; Tracker wires them and keeps the track's state. It is large
-// (MiBs): give it static storage or allocate it once.
+// cylinder sizer, size filter, lost search, depth guard, fast motion and correlation cue),
+// each a fixed-size class of its own with its own tests; Tracker wires them and keeps the
+// track's state. It is large (MiBs): give it static storage or allocate it once.
 class Tracker {
  public:
   Tracker();
