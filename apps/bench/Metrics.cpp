@@ -18,8 +18,12 @@ double overlapDouble(const Box& a, const Box& b) {
   return inter / (double(a.w) * a.h + double(b.w) * b.h - inter);
 }
 
-FrameEval evaluateFrame(const Box& groundTruth, const Box& predicted) {
+FrameEval evaluateFrame(const Box& groundTruth, const Box& predicted, bool hidden) {
   FrameEval e;
+  if (groundTruth.empty()) {
+    e.overlap = predicted.empty() || hidden ? 1.0 : 0.0;
+    return e;
+  }
   e.overlap = overlapDouble(groundTruth, predicted);
   if (!groundTruth.empty() && !predicted.empty()) {
     const double dx = (double(groundTruth.x) + 0.5 * double(groundTruth.w)) -
@@ -32,8 +36,8 @@ FrameEval evaluateFrame(const Box& groundTruth, const Box& predicted) {
   return e;
 }
 
-void RunAccumulator::add(const Box& groundTruth, const Box& predicted) {
-  const FrameEval e = evaluateFrame(groundTruth, predicted);
+void RunAccumulator::add(const Box& groundTruth, const Box& predicted, bool hidden) {
+  const FrameEval e = evaluateFrame(groundTruth, predicted, hidden);
   addOverlapOnly(e.overlap);
   for (int t = 0; t < kPrecisionSteps; ++t)
     if (e.hasCenterDist && e.centerDistPx <= t) ++_precisionFrames[t];

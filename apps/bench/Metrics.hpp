@@ -45,7 +45,14 @@ struct FrameEval {
   bool hasCenterDist = false;  // both boxes non-empty
   double centerDistPx = 0.0;   // [px], valid when hasCenterDist
 };
-FrameEval evaluateFrame(const Box& groundTruth, const Box& predicted);
+// A frame whose truth is empty (the target hidden or out of view) scores 1 when the
+// tracker reports no visible target (no box, or a box it flags as hidden behind something:
+// `hidden`) and 0 when it reports one, as long-term tracking scores absence (VOT-LT,
+// OxUvA): a robot must know when its target is gone.
+FrameEval evaluateFrame(const Box& groundTruth, const Box& predicted, bool hidden = false);
+// Names the scoring rule in the peer cache's key: a result scored by an older rule is
+// never read. Change it with any change to how a frame is scored.
+inline constexpr const char* kScoringRule = "absence-scored";
 
 // Figures of one run over one sequence.
 struct RunFigures {
@@ -64,7 +71,7 @@ struct RunFigures {
 
 class RunAccumulator {
  public:
-  void add(const Box& groundTruth, const Box& predicted);
+  void add(const Box& groundTruth, const Box& predicted, bool hidden = false);
   void addOverlapOnly(double overlap);  // for callers that evaluated the frame already
   // A frame's 3D centre: truth and estimate [mm], camera coordinates.
   void addPosition(const float truthMm[3], const float estimateMm[3]);

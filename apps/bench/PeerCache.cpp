@@ -6,6 +6,7 @@
 #include <cstring>
 #include <opencv2/core/version.hpp>
 
+#include "Metrics.hpp"
 #include "Outputs.hpp"
 
 namespace cuetrack::bench {
@@ -33,6 +34,7 @@ uint64_t sequenceHash(const EntrySpec& spec, const Sequence& seq, uint64_t seed)
   Fnv64 f;
   f.text(spec.tracker);
   f.text(CV_VERSION);
+  f.text(kScoringRule);
   f.value(spec.runs);
   f.value(seed);
   f.text(seq.name);

@@ -1,9 +1,9 @@
 // The OpenCV peers are deterministic on the same frames (a seeded cv::theRNG for those
 // that sample), so a development-set run need not re-run them: --peer-cache DIR keeps
 // each peer's result for each sequence, keyed by the peer, OpenCV's version, the runs,
-// the first seed and the decoded sequence itself. A changed video, ground truth, slice,
-// stride or OpenCV gives a new key, so a stale result is never read. The timings in a
-// cached result are those of the run that made it.
+// the first seed, the scoring rule and the decoded sequence itself. A changed video, ground truth,
+// slice, stride or OpenCV gives a new key, so a stale result is never read. The timings in a cached
+// result are those of the run that made it.
 #pragma once
 
 #include <cstdint>

@@ -84,6 +84,9 @@ class BenchTracker {
   // The 3D centre [mm] (camera coordinates) the last update reported; false when it
   // reported none (a 2D tracker, or no target).
   virtual bool lastPositionMm(float /*out*/[3]) const { return false; }
+  // The last update's box is where the target was last seen, now hidden behind something
+  // (cuetrack's occluded flag): right, not wrong, when the target is not visible.
+  virtual bool lastHidden() const { return false; }
 };
 
 struct EntrySpec {

@@ -24,20 +24,26 @@ TEST_CASE("overlap is intersection over union, hand-computed") {
   CHECK(d.centerDistPx == Approx(50.0));
 }
 
-TEST_CASE("empty boxes score overlap 0 and have no centre distance") {
+TEST_CASE("empty boxes: a missed target scores 0, a target reported absent when absent 1") {
   const Box gt{10, 10, 20, 20};
   const FrameEval noPrediction = evaluateFrame(gt, Box{});
   CHECK(noPrediction.overlap == 0.0);
   CHECK_FALSE(noPrediction.hasCenterDist);
+  // The target is not visible: a box reported is wrong ...
   const FrameEval noTarget = evaluateFrame(Box{0, 0, 0, 0}, gt);
   CHECK(noTarget.overlap == 0.0);
   CHECK_FALSE(noTarget.hasCenterDist);
   // Zero width alone is empty too.
   CHECK(evaluateFrame(Box{10, 10, 0, 20}, gt).overlap == 0.0);
-  CHECK(evaluateFrame(Box{}, Box{}).overlap == 0.0);
+  // ... no box, or a box flagged as hidden behind something, is right.
+  CHECK(evaluateFrame(Box{}, Box{}).overlap == 1.0);
+  CHECK(evaluateFrame(Box{}, gt, true).overlap == 1.0);
+  CHECK_FALSE(evaluateFrame(Box{}, gt, true).hasCenterDist);
+  // A visible target is scored by its overlap whatever the flag says.
+  CHECK(evaluateFrame(gt, Box{10, 10, 20, 10}, true).overlap == Approx(0.5));
 }
 
-TEST_CASE("run figures: hit > 1/3, PASCAL > 0.5, empty ground truth counts with 0") {
+TEST_CASE("run figures: hit > 1/3, PASCAL > 0.5, a box on an invisible target counts with 0") {
   RunAccumulator acc;
   acc.add(Box{0, 0, 10, 10}, Box{0, 0, 10, 10});  // 1.0: hit, pascal, dist 0
   acc.add(Box{0, 0, 10, 10}, Box{5, 0, 10, 10});  // 1/3 exactly: neither hit nor pascal
