@@ -17,7 +17,7 @@ Tracker& sharedTracker() {
 // Ablations of the beyond-the-paper switches: "<preset>-<switch off>", e.g.
 // best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
 // best-nofastmotion (no jumping particles, no coasting over dropped frames),
-// best-nocorrelation (no template cue),
+// best-nocorrelation (no template cue), best-noocclusion (learns covered frames too),
 // 1.1-centrednegatives (2D near negatives centred on the estimate).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
@@ -28,6 +28,7 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
                               {"-fixedsize", &TrackerConfig::adaptCylinderSize},
                               {"-nofastmotion", &TrackerConfig::fastMotion},
                               {"-nocorrelation", &TrackerConfig::correlationCue},
+                              {"-noocclusion", &TrackerConfig::occlusionGate},
                               {"-centrednegatives", &TrackerConfig::anchoredNegatives2d}};
   for (const Off& o : kOffs) {
     const std::string suffix(o.suffix);
@@ -60,15 +61,18 @@ class CuetrackBench final : public BenchTracker {
     const TrackResult r = sharedTracker().update(f.frame());
     _hasPosition = r.state == TrackState::Tracking && r.hasPosition3d;
     for (int a = 0; a < 3; ++a) _positionMm[a] = r.positionMm[a];
+    _hidden = r.occluded;
     stageUs[0] = r.timesUs.features;
     stageUs[1] = r.timesUs.predict;
     stageUs[2] = r.timesUs.weigh;
     stageUs[3] = r.timesUs.learn;
     stageUs[4] = r.timesUs.total;
-    // Lost (or idle): the tracker reports no target, scored as an empty box.
+    // Lost (or idle): the tracker reports no target, scored as an empty box. Occluded:
+    // a box where the target was last seen, and no claim that it is visible.
     return r.state == TrackState::Tracking ? r.box : Box{};
   }
   bool hasStages() const override { return true; }
+  bool lastHidden() const override { return _hidden; }
   bool lastPositionMm(float out[3]) const override {
     for (int a = 0; a < 3; ++a) out[a] = _positionMm[a];
     return _hasPosition;
@@ -77,6 +81,7 @@ class CuetrackBench final : public BenchTracker {
  private:
   TrackerConfig _config;
   bool _hasPosition = false;
+  bool _hidden = false;
   float _positionMm[3] = {0.f, 0.f, 0.f};
   platform::MonotonicClock _clock;
 };

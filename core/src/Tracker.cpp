@@ -1,5 +1,6 @@
 #include "cuetrack/core/Tracker.hpp"
 
+#include "cuetrack/core/Occlusion.hpp"
 #include "cuetrack/core/PeakContrast.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
@@ -47,6 +48,7 @@ void Tracker::reset() {
   _lost.reset();
   _lastBox = Box{};
   _lostFrames = 0;
+  _holding = false;
 }
 
 Box Tracker::clampToImage(const Box& b) const {
@@ -132,6 +134,9 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _rng.reseed(_seed);
   _lost.reset();
   _lostFrames = 0;
+  _holding = false;
+  _learntMotion.clear();
+  _learntUs = frame.timeUs;
   _scanTile = 0;
 
   Particle q;
@@ -321,19 +326,25 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     // moved in depth while hidden, but not so far.
     if (_is3d && (wasLost || _lost.onProbation()) && _depthGuard.implausibleFind(e.particle.p[2]))
       miss = true;
+    e.miss = miss;
     _state = _lost.step(_state, miss ? 0.f : e.confidence);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
   }
   // Just found again (on probation): the estimate may be off the target's centre, or
   // on a look-alike; learn only once the detector has confirmed it.
   bool learned = false;
-  if (!e.box.empty() && !miss && !_lost.onProbation() &&
+  if (!e.box.empty() && !miss && !_lost.onProbation() && !covered(frame, e.particle) &&
       _gate.open(e.confidence, e.concentration, _state)) {
     // Only on frames fit to learn: the estimate is then on the target.
     if (_is3d && _config.adaptCylinderSize && frame.hasDepth() &&
         _sizer.follow(frame, _channels, _k, particleBox(e.particle), e.particle, _filter))
       e.box = particleBox(e.particle);
     _lastEstimate = e.particle;
+    _learntUs = frame.timeUs;
+    if (_is3d && _config.occlusionGate) {
+      const float p[3] = {e.particle.p[0], e.particle.p[1], e.particle.p[2]};
+      _learntMotion.add(frame.timeUs, p);
+    }
     learn(clampToImage(e.box), roi);
     learned = true;
   }
@@ -343,6 +354,33 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
       learned || (_state == TrackState::Tracking && (wasLost || _lost.onProbation()));
   if (confirmed) _depthGuard.confirm(e.particle.p[2]);
   return learned;
+}
+
+bool Tracker::covered(const Frame& frame, const Particle& q) const {
+  if (!_is3d || !_config.occlusionGate || !frame.hasDepth()) return false;
+  // The target's own box (not the padded window), against its front surface.
+  const float frontMm = q.p[2] - 0.5f * q.size[0];
+  return occlusion::nearerFraction(frame.depthMm, _padding.toTarget(particleBox(q)),
+                                   occlusion::occluderBelowMm(frontMm, q.size[0])) >
+         tuning::occlusion::kCoveredAbove;
+}
+
+void Tracker::hold(const Frame& frame, const Estimate& e) {
+  // Lost, or missed, with the last learnt estimate covered by a nearer surface: the target
+  // is behind it, and reported there, moving on as it moved, while the search goes on,
+  // until found again, uncovered, or held for kMaxHoldS.
+  const bool behind = (_state == TrackState::Lost || e.miss) && covered(frame, _lastEstimate);
+  if (behind && !_holding) {
+    _heldSinceUs = frame.timeUs;
+    _heldFrom = _lastEstimate;
+    _learntMotion.velocity(_heldVelocity);
+  }
+  _holding = behind &&
+             static_cast<float>(frame.timeUs - _heldSinceUs) * 1e-6f < tuning::occlusion::kMaxHoldS;
+  if (!_holding) return;
+  // Sideways only: what brings the target out from behind the occluder.
+  const float sinceS = static_cast<float>(frame.timeUs - _learntUs) * 1e-6f;
+  for (int a = 0; a < 2; ++a) _lastEstimate.p[a] = _heldFrom.p[a] + _heldVelocity[a] * sinceS;
 }
 
 void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity) {
@@ -480,6 +518,7 @@ TrackResult Tracker::update(const Frame& frame) {
   Estimate e = estimate();
   const uint64_t t4 = now();
   const bool learned = decide(frame, e, wasLost, roi);
+  hold(frame, e);
   _fast.endFrame(learned);
   const uint64_t t5 = now();
 
@@ -500,9 +539,15 @@ TrackResult Tracker::update(const Frame& frame) {
   r.box = _padding.toTarget(_lastBox);
   r.confidence = e.confidence;
   r.learned = learned;
+  const Particle& at = _holding ? _lastEstimate : e.particle;
+  if (_holding) {
+    r.state = TrackState::Tracking;
+    r.occluded = true;
+    r.box = _padding.toTarget(particleBox(at));
+  }
   if (_is3d) {
     r.hasPosition3d = true;
-    for (int a = 0; a < 3; ++a) r.positionMm[a] = e.particle.p[a];
+    for (int a = 0; a < 3; ++a) r.positionMm[a] = at.p[a];
   }
   if (_clock != nullptr) {
     r.timesUs.predict = static_cast<uint32_t>((t1 - t0) + (t3 - t2));

@@ -60,6 +60,9 @@ enum {
 /* TRACK flags. */
 #define CTP_FLAG_HAS_3D 0x01u  /* centre_mm valid */
 #define CTP_FLAG_LEARNED 0x02u /* the model was updated with this frame */
+/* TRACKING, but the target is hidden behind something nearer: box and centre_mm are where
+   it was last seen (3D only) */
+#define CTP_FLAG_OCCLUDED 0x04u
 /* HEARTBEAT flags */
 #define CTP_HB_NO_CAMERA 0x01u /* no camera yet: the device waits for one to be plugged in */
 

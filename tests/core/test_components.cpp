@@ -1,6 +1,7 @@
 // The beyond-the-paper components the tracker wires, each on its own: the depth guard,
-// fast motion's jumps, the lost search, the peak contrast, and the small helpers (the depth median
-// that places a new 3D track, the scan order, the small target's padding).
+// the occlusion test, fast motion's jumps, the lost search, the peak contrast, and the small
+// helpers (the depth median that places a new 3D track, the scan order, the small target's
+// padding).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "cuetrack/core/DepthMedian.hpp"
 #include "cuetrack/core/FastMotion.hpp"
 #include "cuetrack/core/LostSearch.hpp"
+#include "cuetrack/core/Occlusion.hpp"
 #include "cuetrack/core/PeakContrast.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
 #include "cuetrack/core/WindowPadding.hpp"
@@ -57,6 +59,65 @@ TEST_CASE("DepthGuard: a find far off the confirmed depth is not the target",
   CHECK(g.implausibleFind(4000.f));
   CHECK(g.implausibleFind(1400.f));
   CHECK(g.implausibleFind(1000.f));
+}
+
+TEST_CASE("Occlusion: the part of a box's valid depth nearer than a bound", "[core][occlusion]") {
+  // 100 x 80 px of target at 2000 mm; its left 40 columns covered by a board at 1500 mm,
+  // a hole (0) over its top 20 rows.
+  std::vector<uint16_t> px(100 * 80, 2000);
+  for (int y = 0; y < 80; ++y)
+    for (int x = 0; x < 40; ++x) px[y * 100 + x] = 1500;
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 100; ++x) px[y * 100 + x] = 0;
+  const DepthView depth{px.data(), 100, 80, 100};
+  const Box whole{0.f, 0.f, 100.f, 80.f};
+  const float below = occlusion::occluderBelowMm(1950.f, 200.f);
+  CHECK(below < 1950.f - 100.f - 30.f);  // past the target's own relief and depth noise ...
+  CHECK(below > 1600.f);                 // ... and near enough to see a board 450 mm in front
+  // Holes are not counted: 40 % of the columns, over the rows that have depth.
+  CHECK(occlusion::nearerFraction(depth, whole, below) == Approx(0.4f).margin(0.04f));
+  CHECK(occlusion::nearerFraction(depth, Box{50.f, 0.f, 50.f, 80.f}, below) == 0.f);
+  CHECK(occlusion::nearerFraction(depth, Box{0.f, 30.f, 30.f, 30.f}, below) == 1.f);
+  // All holes, an empty box, a box off the image: nothing seen, nothing covered.
+  CHECK(occlusion::nearerFraction(depth, Box{0.f, 0.f, 100.f, 19.f}, below) == 0.f);
+  CHECK(occlusion::nearerFraction(depth, Box{}, below) == 0.f);
+  CHECK(occlusion::nearerFraction(depth, Box{200.f, 200.f, 10.f, 10.f}, below) == 0.f);
+  // A box partly off the image: only its part on the image is read.
+  CHECK(occlusion::nearerFraction(depth, Box{-50.f, 30.f, 80.f, 30.f}, below) == 1.f);
+}
+
+TEST_CASE("LearntMotion: the slope of the learnt positions, once there are enough",
+          "[core][occlusion]") {
+  LearntMotion m;
+  float v[3];
+  // 30 fps, x at 40 mm/s with +-5 mm of alternating noise, y still, z at -100 mm/s.
+  auto at = [](int k, float out[3]) {
+    out[0] = 100.f + 40.f * static_cast<float>(k) / 30.f + (k % 2 != 0 ? 5.f : -5.f);
+    out[1] = 200.f;
+    out[2] = 2400.f - 100.f * static_cast<float>(k) / 30.f;
+  };
+  float p[3];
+  for (int k = 0; k < LearntMotion::kMinSamples - 1; ++k) {
+    at(k, p);
+    m.add(1000000u + static_cast<uint64_t>(k) * 33333u, p);
+  }
+  CHECK_FALSE(m.velocity(v));  // too few samples: no velocity
+  CHECK(v[0] == 0.f);
+  for (int k = LearntMotion::kMinSamples - 1; k < 40; ++k) {
+    at(k, p);
+    m.add(1000000u + static_cast<uint64_t>(k) * 33333u, p);
+  }
+  REQUIRE(m.velocity(v));
+  CHECK(v[0] == Approx(40.f).margin(6.f));  // the noise alone would give +-300 mm/s a frame
+  CHECK(v[1] == Approx(0.f).margin(1e-3f));
+  CHECK(v[2] == Approx(-100.f).margin(1.f));
+  // Time going back (a new recording): started again, too few samples.
+  m.add(1000u, p);
+  CHECK_FALSE(m.velocity(v));
+  // Samples under kMinSpanS apart (a burst of frames): no velocity either.
+  m.clear();
+  for (int k = 0; k < LearntMotion::kSamples; ++k) m.add(1000000u + static_cast<uint64_t>(k), p);
+  CHECK_FALSE(m.velocity(v));
 }
 
 TEST_CASE("FastMotion: in 2D every 10th particle jumps after a learnt frame only",

@@ -19,13 +19,18 @@ struct Stats {
   int frames = 0, hits = 0;
   int framesAfter = 0, hitsAfter = 0;  // from frame `after` of runScene on
   double overlapAfter = 0;             // ... and the overlaps summed over them
-  int lostWhileHidden = 0;             // frames reported Lost while the target is hidden
-  int lastHidden = -1;                 // the last frame with the target hidden
-  int foundAgainAt = -1;               // the first hit after it
+  int absentWhileHidden = 0;  // frames the target is hidden and reported so (Lost, or occluded)
+  int scored = 0;             // frames right as the benchmark scores them: a hit where the
+                              // target is visible, reported absent where it is not
+  int lastHidden = -1;        // the last frame with the target hidden
+  int foundAgainAt = -1;      // the first hit after it
   double overlapSum = 0;
   uint64_t allocations = 0;
   float hitRate() const {
     return frames ? static_cast<float>(hits) / static_cast<float>(frames) : 0.f;
+  }
+  float scoredRate() const {
+    return frames ? static_cast<float>(scored) / static_cast<float>(frames) : 0.f;
   }
   float hitRateAfter() const {
     return framesAfter ? static_cast<float>(hitsAfter) / static_cast<float>(framesAfter) : 0.f;
@@ -76,7 +81,10 @@ Stats runScene(const char* scene, const TrackerConfig& config, uint64_t seed, in
       s.hitsAfter += o > 1.f / 3.f ? 1 : 0;
       ++s.framesAfter;
     }
-    if (slot.groundTruth.empty() && r.state == TrackState::Lost) ++s.lostWhileHidden;
+    const bool absent = r.state == TrackState::Lost || r.occluded;
+    if (slot.groundTruth.empty() && absent) ++s.absentWhileHidden;
+    s.scored += slot.groundTruth.empty() ? (absent ? 1 : 0)
+                                         : (r.state == TrackState::Tracking && o > 1.f / 3.f);
     if (slot.groundTruth.empty()) {
       s.lastHidden = slot.index;
       s.foundAgainAt = -1;
@@ -238,7 +246,7 @@ TEST_CASE("best finds a target again that comes back elsewhere", "[core][e2e]") 
     const float after = s.hitRateAfter();
     INFO("seed " << seed << ": hit rate after frame " << kAfter << " " << after);
     CHECK(s.allocations == 0);
-    CHECK(s.lostWhileHidden >= 10);  // it knows the target is gone
+    CHECK(s.absentWhileHidden >= 10);  // it knows the target is gone
     found += after >= 0.9f ? 1 : 0;
   }
   INFO(found << " of " << seeds << " seeds found the target again");
@@ -280,8 +288,8 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
     const Stats s = runScene("occlusion", presetConfig(Preset::Best), seed, 150, kAfter);
     const float after = s.hitRateAfter();
     INFO("seed " << seed << ": hit rate " << s.hitRate() << ", after frame " << kAfter << " "
-                 << after << ", lost while hidden " << s.lostWhileHidden);
-    CHECK(s.lostWhileHidden >= 10);  // it knows the target is gone
+                 << after << ", reported absent while hidden " << s.absentWhileHidden);
+    CHECK(s.absentWhileHidden >= 10);  // it knows the target is gone
     CHECK(s.allocations == 0);
     sum += after;
   }
@@ -300,6 +308,33 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
   const float meanNoLost = sumNoLost / static_cast<float>(controlSeeds);
   INFO("without lost detection, mean hit rate after frame " << kAfter << ": " << meanNoLost);
   CHECK(meanNoLost <= 0.5f);
+}
+
+TEST_CASE("best holds the target behind a look-alike that crosses in front of it", "[core][e2e]") {
+  // The look-alike (1.6 m) covers the target (2.4 m) partly from frame 46 to 104 and wholly
+  // from 67 to 84. Seeds 1-5, scored as cuetrack-bench scores (a hit where the target is
+  // visible and tracked, "not visible" where it is hidden): 0.99-1.0 with the occlusion
+  // gate; 0.48-0.83, mean 0.69, without it (lost for ~45 frames from ~55, after learning
+  // the look-alike's edge). Under qemu one seed.
+  const uint64_t seeds = emulated() ? 1 : 5;
+  TrackerConfig noGate = presetConfig(Preset::Best);
+  noGate.occlusionGate = false;
+  float sum = 0.f, sumNoGate = 0.f;
+  for (uint64_t seed = 1; seed <= seeds; ++seed) {
+    const Stats s = runScene("lookalike", presetConfig(Preset::Best), seed, 150);
+    const Stats n = runScene("lookalike", noGate, seed, 150);
+    INFO("seed " << seed << ": scored " << s.scoredRate() << " (without the gate " << n.scoredRate()
+                 << "), reported absent while hidden " << s.absentWhileHidden);
+    CHECK(s.absentWhileHidden >= 18);  // of 21 hidden frames
+    CHECK(s.allocations == 0);
+    sum += s.scoredRate();
+    sumNoGate += n.scoredRate();
+  }
+  const float mean = sum / static_cast<float>(seeds);
+  const float meanNoGate = sumNoGate / static_cast<float>(seeds);
+  INFO("mean " << mean << ", without the occlusion gate " << meanNoGate);
+  CHECK(mean >= 0.9f);
+  CHECK(mean >= meanNoGate + 0.15f);
 }
 
 TEST_CASE("best reports a first box on a plain wall lost within a few frames", "[core][e2e]") {

@@ -30,6 +30,9 @@ struct TrackResult {
       0, 0, 0};  // cylinder centre in camera coordinates [mm] (x right, y down, z forward)
   float confidence = 0.f;  // strong classifier output at the estimate, in [0, 1]
   bool learned = false;    // the update gate opened this frame
+  // 3D (occlusionGate): the target is hidden behind a nearer surface; state is Tracking,
+  // box and positionMm are where it was last seen, and the search for it goes on.
+  bool occluded = false;
   StageTimesUs timesUs{};
 };
 

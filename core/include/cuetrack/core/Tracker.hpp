@@ -23,6 +23,7 @@
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/LostSearch.hpp"
 #include "cuetrack/core/NegativeSampler.hpp"
+#include "cuetrack/core/Occlusion.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
@@ -82,12 +83,15 @@ class Tracker {
     float confidence = 0.f;     // (c + 1) / 2 at the estimate
     float concentration = 0.f;  // weighted mean overlap of the particles with it
     float contrast = 0.f;       // PeakContrast: the score above the windows around it
+    bool miss = false;          // decide(): not the target, whatever the confidence
   };
   // update()'s stages, in order.
   PixelRect predict(float dtS, int framesElapsed,
                     bool wasLost);                 // motion (+ search while lost); the ROI
   void correctDepths(float dtS);                   // 3D: every particle onto the surface
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
+  bool covered(const Frame& frame, const Particle& q) const;  // occlusionGate
+  void hold(const Frame& frame, const Estimate& e);  // occlusionGate: lost behind something
   void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
   void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
   // One particle in correlation::kEvery drawn at window c from `from`, and scored.
@@ -140,6 +144,15 @@ class Tracker {
   Box _movedBoxes[kMaxMoved];
   uint8_t _movedValid[kMaxMoved];
   float _movedScores[kMaxMoved];
+  // occlusionGate: lost while covered by a nearer surface, the target is reported where
+  // it was last learnt (_heldFrom, at _learntUs), moved on at the velocity of its learnt
+  // positions (_heldVelocity), since _heldSinceUs; _lastEstimate follows, and the search
+  // with it.
+  bool _holding = false;
+  uint64_t _heldSinceUs = 0, _learntUs = 0;
+  Particle _heldFrom{};
+  float _heldVelocity[3] = {0.f, 0.f, 0.f};  // [mm/s]
+  LearntMotion _learntMotion;
   int _lostFrames = 0;     // lost detection (beyond the paper): frames since declared lost
   DepthGuard _depthGuard;  // ... 3D: the estimate's depth against the confirmed one
 

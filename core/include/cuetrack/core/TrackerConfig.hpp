@@ -38,6 +38,8 @@ struct TrackerConfig {
   // Abrupt motion: a slowly learnt gray template is matched densely around the last
   // estimate (CorrelationCue); particles are drawn at its peak and weighed by it too.
   bool correlationCue = false;
+  // 3D: a frame whose box is mostly covered by a nearer surface is not learnt (Occlusion).
+  bool occlusionGate = false;
   // 2D negatives shrunk or grown around the estimate are anchored at its start, centre or
   // end along each axis (else centred): an implementation choice of every preset, here so
   // that its effect can be measured (`1.1-centrednegatives`).

@@ -141,4 +141,16 @@ inline constexpr float kJumpRatio = 0.75f;
 inline constexpr float kFoundRatio = 1.f / kJumpRatio;
 }  // namespace depthGuard
 
+namespace occlusion {  // 3D, Occlusion: a frame whose box is covered is not learnt
+// A surface more than D/2 plus this (kGapRatio x the depth, at least kMinGapMm) in front
+// of the target's front surface is an occluder: past the target's own relief and Kinect
+// depth noise (~1.5% at 2 m).
+inline constexpr float kMinGapMm = 60.f;
+inline constexpr float kGapRatio = 0.03f;
+// Covered: more than this fraction of the box's valid depth is an occluder.
+inline constexpr float kCoveredAbove = 0.25f;
+// Lost while covered, the target is reported where it was last learnt for at most this.
+inline constexpr float kMaxHoldS = 2.f;
+}  // namespace occlusion
+
 }  // namespace cuetrack::tuning
