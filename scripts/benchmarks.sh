@@ -197,7 +197,9 @@ page="$OUT/benchmarks.md"
     echo "RGB-D scenes and ${#still_seqs[@]} synthetic targets in real Kinect stills (\`still:\`); cuetrack 5"
     echo "seeds, the OpenCV trackers once (they are deterministic). Mean"
     echo "overlap [%] per sequence; the last column is best minus 1.1, \`*\` where it exceeds the"
-    echo "seed-to-seed spread. Command:"
+    echo "seed-to-seed spread. A frame where the target is hidden or out of view scores 1 for a"
+    echo "tracker that reports it absent (lost, or occluded) and 0 for one that reports a box"
+    echo "([bench-json](bench-json.md)). Command:"
     echo
     code "scripts/devset.sh best 1.1"
     echo
