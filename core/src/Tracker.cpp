@@ -1,6 +1,5 @@
 #include "cuetrack/core/Tracker.hpp"
 
-#include "cuetrack/core/Occlusion.hpp"
 #include "cuetrack/core/PeakContrast.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
@@ -149,6 +148,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     q.size[1] = b.h;
   }
   _lastEstimate = q;
+  _learnt = q;
   _prevEstimate = q;
   _depthGuard.reset(q.p[2]);
   _lastBox = b;
@@ -340,6 +340,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
         _sizer.follow(frame, _channels, _k, particleBox(e.particle), e.particle, _filter))
       e.box = particleBox(e.particle);
     _lastEstimate = e.particle;
+    _learnt = e.particle;
     _learntUs = frame.timeUs;
     if (_is3d && _config.occlusionGate) {
       const float p[3] = {e.particle.p[0], e.particle.p[1], e.particle.p[2]};
@@ -372,15 +373,15 @@ void Tracker::hold(const Frame& frame, const Estimate& e) {
   const bool behind = (_state == TrackState::Lost || e.miss) && covered(frame, _lastEstimate);
   if (behind && !_holding) {
     _heldSinceUs = frame.timeUs;
-    _heldFrom = _lastEstimate;
     _learntMotion.velocity(_heldVelocity);
   }
   _holding = behind &&
              static_cast<float>(frame.timeUs - _heldSinceUs) * 1e-6f < tuning::occlusion::kMaxHoldS;
   if (!_holding) return;
-  // Sideways only: what brings the target out from behind the occluder.
+  // From where it was learnt (an earlier hold may have moved _lastEstimate), across the
+  // view only (x, y: what brings the target out from behind the occluder), not in depth.
   const float sinceS = static_cast<float>(frame.timeUs - _learntUs) * 1e-6f;
-  for (int a = 0; a < 2; ++a) _lastEstimate.p[a] = _heldFrom.p[a] + _heldVelocity[a] * sinceS;
+  for (int a = 0; a < 2; ++a) _lastEstimate.p[a] = _learnt.p[a] + _heldVelocity[a] * sinceS;
 }
 
 void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity) {

@@ -145,12 +145,12 @@ class Tracker {
   uint8_t _movedValid[kMaxMoved];
   float _movedScores[kMaxMoved];
   // occlusionGate: lost while covered by a nearer surface, the target is reported where
-  // it was last learnt (_heldFrom, at _learntUs), moved on at the velocity of its learnt
+  // it was last learnt (_learnt, at _learntUs), moved on at the velocity of its learnt
   // positions (_heldVelocity), since _heldSinceUs; _lastEstimate follows, and the search
   // with it.
   bool _holding = false;
   uint64_t _heldSinceUs = 0, _learntUs = 0;
-  Particle _heldFrom{};
+  Particle _learnt{};
   float _heldVelocity[3] = {0.f, 0.f, 0.f};  // [mm/s]
   LearntMotion _learntMotion;
   int _lostFrames = 0;     // lost detection (beyond the paper): frames since declared lost
