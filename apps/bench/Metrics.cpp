@@ -37,7 +37,10 @@ FrameEval evaluateFrame(const Box& groundTruth, const Box& predicted, bool hidde
 }
 
 void RunAccumulator::add(const Box& groundTruth, const Box& predicted, bool hidden) {
-  const FrameEval e = evaluateFrame(groundTruth, predicted, hidden);
+  add(evaluateFrame(groundTruth, predicted, hidden));
+}
+
+void RunAccumulator::add(const FrameEval& e) {
   addOverlapOnly(e.overlap);
   for (int t = 0; t < kPrecisionSteps; ++t)
     if (e.hasCenterDist && e.centerDistPx <= t) ++_precisionFrames[t];

@@ -72,6 +72,7 @@ struct RunFigures {
 class RunAccumulator {
  public:
   void add(const Box& groundTruth, const Box& predicted, bool hidden = false);
+  void add(const FrameEval& e);         // a frame the caller evaluated already
   void addOverlapOnly(double overlap);  // for callers that evaluated the frame already
   // A frame's 3D centre: truth and estimate [mm], camera coordinates.
   void addPosition(const float truthMm[3], const float estimateMm[3]);

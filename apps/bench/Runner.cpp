@@ -282,9 +282,8 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
       ++stageFrames;
       boxes.push_back({f.index, box});
       if (f.hasGroundTruth) {
-        const bool hidden = tracker->lastHidden();
-        const FrameEval e = evaluateFrame(f.groundTruth, box, hidden);
-        acc.add(f.groundTruth, box, hidden);
+        const FrameEval e = evaluateFrame(f.groundTruth, box, tracker->lastHidden());
+        acc.add(e);
         // 3D error where the target is visible and the tracker placed it in 3D.
         float posMm[3];
         if (f.hasTruthMm && !f.groundTruth.empty() && !box.empty() &&

@@ -333,8 +333,8 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
   // Just found again (on probation): the estimate may be off the target's centre, or
   // on a look-alike; learn only once the detector has confirmed it.
   bool learned = false;
-  if (!e.box.empty() && !miss && !_lost.onProbation() && !covered(frame, e.particle) &&
-      _gate.open(e.confidence, e.concentration, _state)) {
+  if (!e.box.empty() && !miss && !_lost.onProbation() &&
+      _gate.open(e.confidence, e.concentration, _state) && !covered(frame, e.particle)) {
     // Only on frames fit to learn: the estimate is then on the target.
     if (_is3d && _config.adaptCylinderSize && frame.hasDepth() &&
         _sizer.follow(frame, _channels, _k, particleBox(e.particle), e.particle, _filter))
@@ -420,11 +420,14 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
     _movedIndex[moved] = static_cast<uint16_t>(i);
     _movedBoxes[moved] = particleBox(q);
     _boxes[i] = _movedBoxes[moved];
-    // Mostly inside the image even while tracking, as the template's peaks are.
-    _movedValid[moved] = scorable(_boxes[i], q, _state == TrackState::Lost) &&
-                                 LostSearch::insideEnough(_boxes[i], _imageW, _imageH)
-                             ? 1
-                             : 0;
+    // Mostly inside the image even while tracking, as the template's peaks are (while
+    // searching, scorable() asks that already).
+    const bool searching = _state == TrackState::Lost;
+    _movedValid[moved] =
+        scorable(_boxes[i], q, searching) &&
+                (searching || LostSearch::insideEnough(_boxes[i], _imageW, _imageH))
+            ? 1
+            : 0;
     ++moved;
   }
   _strong.evaluateMany(_channels.tables(), _movedBoxes, _movedValid, moved, _movedScores);
