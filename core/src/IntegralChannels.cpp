@@ -57,17 +57,30 @@ void IntegralChannels::compute(const Frame& frame, const PixelRect& roi, bool us
   }
 }
 
+namespace {
+// r in table coordinates, clipped to the tables; false when nothing is left.
+bool toTable(const PixelRect& r, const FrameTables& t, int* x0, int* y0, int* x1, int* y1) {
+  *x0 = r.x0 - t.originX < 0 ? 0 : r.x0 - t.originX;
+  *y0 = r.y0 - t.originY < 0 ? 0 : r.y0 - t.originY;
+  *x1 = r.x1 - t.originX > t.width ? t.width : r.x1 - t.originX;
+  *y1 = r.y1 - t.originY > t.height ? t.height : r.y1 - t.originY;
+  return *x1 > *x0 && *y1 > *y0;
+}
+}  // namespace
+
 float IntegralChannels::meanDepthMm(const PixelRect& r) const {
-  int x0 = r.x0 - _t.originX, x1 = r.x1 - _t.originX;
-  int y0 = r.y0 - _t.originY, y1 = r.y1 - _t.originY;
-  if (x0 < 0) x0 = 0;
-  if (y0 < 0) y0 = 0;
-  if (x1 > _t.width) x1 = _t.width;
-  if (y1 > _t.height) y1 = _t.height;
-  if (x1 <= x0 || y1 <= y0) return 0.f;
+  int x0, y0, x1, y1;
+  if (!toTable(r, _t, &x0, &y0, &x1, &y1)) return 0.f;
   const float n = detail::rect(_count, _t.stride, x0, y0, x1, y1);
   if (n < 0.5f) return 0.f;
   return detail::rect(_depth, _t.stride, x0, y0, x1, y1) / n;
+}
+
+float IntegralChannels::validDepthFraction(const PixelRect& r) const {
+  int x0, y0, x1, y1;
+  if (r.width() <= 0 || r.height() <= 0 || !toTable(r, _t, &x0, &y0, &x1, &y1)) return 0.f;
+  return detail::rect(_count, _t.stride, x0, y0, x1, y1) /
+         static_cast<float>(r.width() * r.height());
 }
 
 }  // namespace cuetrack

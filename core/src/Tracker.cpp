@@ -366,6 +366,15 @@ bool Tracker::covered(const Frame& frame, const Particle& q) const {
          tuning::occlusion::kCoveredAbove;
 }
 
+bool Tracker::depthMeasured(const Frame& frame, const Particle& q) const {
+  if (!frame.hasDepth()) return false;
+  // The inner half of the target's own box: a cylinder's or a turned box's silhouette
+  // leaves background at the corners of its box.
+  const Box b = _padding.toTarget(particleBox(q));
+  const Box inner{b.x + 0.25f * b.w, b.y + 0.25f * b.h, 0.5f * b.w, 0.5f * b.h};
+  return _channels.validDepthFraction(clipBox(inner, _imageW, _imageH)) >= tuning::kMinDepthSupport;
+}
+
 void Tracker::hold(const Frame& frame, const Estimate& e) {
   // Lost, or missed, with the last learnt estimate covered by a nearer surface: the target
   // is behind it, and reported there, moving on as it moved, while the search goes on,
@@ -552,6 +561,7 @@ TrackResult Tracker::update(const Frame& frame) {
   if (_is3d) {
     r.hasPosition3d = true;
     for (int a = 0; a < 3; ++a) r.positionMm[a] = at.p[a];
+    r.depthPredicted = !depthMeasured(frame, at);
   }
   if (_clock != nullptr) {
     r.timesUs.predict = static_cast<uint32_t>((t1 - t0) + (t3 - t2));

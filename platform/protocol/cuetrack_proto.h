@@ -63,6 +63,10 @@ enum {
 /* TRACKING, but the target is hidden behind something nearer: box and centre_mm are where
    it was last seen (3D only) */
 #define CTP_FLAG_OCCLUDED 0x04u
+/* 3D: too little valid depth on the target (a black, glossy or sunlit surface, or nearer
+   than the sensor's range): centre_mm's z is predicted from its motion, not measured, and
+   the box was placed by colour alone */
+#define CTP_FLAG_DEPTH_PREDICTED 0x08u
 /* HEARTBEAT flags */
 #define CTP_HB_NO_CAMERA 0x01u /* no camera yet: the device waits for one to be plugged in */
 

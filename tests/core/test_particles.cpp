@@ -202,6 +202,28 @@ TEST_CASE("depth correction puts particles onto a known plane", "[core][depth]")
   REQUIRE(q.p[2] == 2000.f);
 }
 
+TEST_CASE("the valid-depth fraction of a rectangle counts its readings", "[core][depth]") {
+  // Left half holes, right half 1500 mm; tables over the right three quarters only.
+  for (int v = 0; v < H; ++v)
+    for (int u = 0; u < W; ++u) depth[v * W + u] = u < W / 2 ? 0 : 1500;
+  Frame f;
+  f.rgb = RgbView{rgb, W, H, W};
+  f.depthMm = DepthView{depth, W, H, W};
+  channels.compute(f, PixelRect{W / 4, 0, W, H}, true);
+  CHECK(channels.validDepthFraction(PixelRect{W / 2, 10, W, 20}) == 1.f);
+  CHECK(channels.validDepthFraction(PixelRect{W / 4, 10, W / 2, 20}) == 0.f);
+  CHECK(channels.validDepthFraction(PixelRect{W / 2 - 10, 10, W / 2 + 30, 20}) == 0.75f);
+  // Outside the tables counts as no reading; an empty rectangle is 0, not a division by 0.
+  CHECK(channels.validDepthFraction(PixelRect{0, 0, W / 4, H}) == 0.f);
+  CHECK(channels.validDepthFraction(PixelRect{0, 10, W / 2 + 40, 20}) ==
+        Approx(40.f / (W / 2 + 40)));
+  CHECK(channels.validDepthFraction(PixelRect{30, 30, 30, 40}) == 0.f);
+  // Without depth every rectangle has none.
+  f.depthMm = DepthView{};
+  channels.compute(f, PixelRect{0, 0, W, H}, true);
+  CHECK(channels.validDepthFraction(PixelRect{W / 2, 10, W, 20}) == 0.f);
+}
+
 TEST_CASE("the cylinder projects to the right rectangle", "[core][depth]") {
   Particle q;
   q.p[0] = 100.f;

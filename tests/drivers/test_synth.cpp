@@ -474,6 +474,31 @@ TEST_CASE("flat-turn: a flat box turns face-on -> nearly edge-on -> face-on", "[
   CHECK(src->truth().yawRad < 0.05f);  // face-on again at the end
 }
 
+TEST_CASE("no-depth: the target reads no depth in frames 40-109 only, the rest keeps it",
+          "[synth]") {
+  SceneSpec spec = scene("no-depth", 150);
+  REQUIRE(spec.targetNoDepthFirst == 40);
+  REQUIRE(spec.targetNoDepthLast == 109);
+  auto src = std::make_unique<SyntheticSource>(spec, 3);
+  auto slot = std::make_unique<FrameSlot>();
+  for (int f : {0, 39, 40, 75, 109, 110, 149}) {
+    INFO("frame " << f);
+    REQUIRE(src->render(f, *slot));
+    const Box gt = slot->groundTruth;
+    REQUIRE(insideImage(gt));
+    // The middle of the target's box is the target; a band right of it (the projector's
+    // shadow falls on the left) is the wall.
+    const int cx = static_cast<int>(centreX(gt));
+    const int y0 = static_cast<int>(gt.y + gt.h * 0.3f), y1 = static_cast<int>(gt.y + gt.h * 0.7f);
+    const double target = zeroShare(*slot, cx - 5, cx + 5, y0, y1);
+    const int xr = static_cast<int>(gt.x + gt.w) + 20;
+    const double wall = zeroShare(*slot, xr, xr + 10, y0, y1);
+    const bool dropped = f >= 40 && f <= 109;
+    CHECK(target == (dropped ? 1.0 : 0.0));
+    CHECK(wall < 0.05);
+  }
+}
+
 TEST_CASE("edge-holes: depth drops out along the target's silhouette, only when asked", "[synth]") {
   SceneSpec spec = scene("edge-holes", 150);
   REQUIRE(spec.edgeHoleProbability > 0.f);
@@ -653,6 +678,7 @@ TEST_CASE("synthetic frames are the same bytes on x86, aarch64 and armhf", "[syn
       {"held", 45, 0xcf856b1c0e2834d8ull},
       {"flat-turn", 75, 0x66a8178efdcf8ea0ull},
       {"edge-holes", 40, 0x4901a31a81dae561ull},
+      {"no-depth", 60, 0x6f2055ac9f2d77ddull},  // the target's depth dropped
   };
   auto slot = std::make_unique<FrameSlot>();
   for (const Golden& g : golden) {

@@ -35,6 +35,10 @@ TEST_CASE("tracker results are quantised to the wire message") {
   CHECK(toTrackMessage(r, 123, 456, CTP_STATE_IDLE).flags ==
         (CTP_FLAG_HAS_3D | CTP_FLAG_LEARNED | CTP_FLAG_OCCLUDED));
   r.occluded = false;
+  r.depthPredicted = true;
+  CHECK(toTrackMessage(r, 123, 456, CTP_STATE_IDLE).flags ==
+        (CTP_FLAG_HAS_3D | CTP_FLAG_LEARNED | CTP_FLAG_DEPTH_PREDICTED));
+  r.depthPredicted = false;
   CHECK(t.centre_mm[0] == -101);
   CHECK(t.centre_mm[1] == 2);
   CHECK(t.centre_mm[2] == 1501);
@@ -86,13 +90,20 @@ TEST_CASE("track lines and CSV rows carry every field") {
   CHECK(std::string(buf) ==
         "track seq=3 t=66666us tracking box=1,2,3,4 mm=-5,6,700 conf=1.000 proc=8000us\n");
   REQUIRE(formatTrackCsvRow(t, buf, sizeof buf) > 0);
-  CHECK(std::string(buf) == "3,66666,tracking,1,2,3,4,1,-5,6,700,1.00000,0,8000,0\n");
+  CHECK(std::string(buf) == "3,66666,tracking,1,2,3,4,1,-5,6,700,1.00000,0,8000,0,0\n");
   t.flags |= CTP_FLAG_OCCLUDED;
   REQUIRE(formatTrackLine(t, buf, sizeof buf) > 0);
   CHECK(std::string(buf) ==
         "track seq=3 t=66666us tracking box=1,2,3,4 mm=-5,6,700 conf=1.000 occluded proc=8000us\n");
   REQUIRE(formatTrackCsvRow(t, buf, sizeof buf) > 0);
-  CHECK(std::string(buf) == "3,66666,tracking,1,2,3,4,1,-5,6,700,1.00000,0,8000,1\n");
+  CHECK(std::string(buf) == "3,66666,tracking,1,2,3,4,1,-5,6,700,1.00000,0,8000,1,0\n");
+  t.flags = CTP_FLAG_HAS_3D | CTP_FLAG_DEPTH_PREDICTED;
+  REQUIRE(formatTrackLine(t, buf, sizeof buf) > 0);
+  CHECK(std::string(buf) ==
+        "track seq=3 t=66666us tracking box=1,2,3,4 mm=-5,6,700 conf=1.000 "
+        "depth-predicted proc=8000us\n");
+  REQUIRE(formatTrackCsvRow(t, buf, sizeof buf) > 0);
+  CHECK(std::string(buf) == "3,66666,tracking,1,2,3,4,1,-5,6,700,1.00000,0,8000,0,1\n");
   CHECK(std::string(trackCsvHeader()).find("seq,time_us,state") == 0);
   REQUIRE(formatTrackLine(t, buf, 10) == 0);  // too small: refused, not truncated silently
 }

@@ -121,9 +121,9 @@ inline void clipSlab(float a, float b, int slabFace, float* tn, float* tf, int* 
 }
 
 constexpr const char* kSceneNames[] = {
-    "moving", "twin-crossing", "occlusion", "untextured", "lighting",     "approach",
-    "box",    "turn",          "fast",      "lookalike",  "leave-return", "against-surface",
-    "held",   "flat-turn",     "edge-holes"};
+    "moving", "twin-crossing", "occlusion",  "untextured", "lighting",     "approach",
+    "box",    "turn",          "fast",       "lookalike",  "leave-return", "against-surface",
+    "held",   "flat-turn",     "edge-holes", "no-depth"};
 constexpr int kNumScenes = static_cast<int>(sizeof(kSceneNames) / sizeof(kSceneNames[0]));
 
 // leave-return: the target's box is empty from frame kLeaveFirst to kLeaveFirst + 29; the
@@ -354,6 +354,20 @@ bool makeScene(const char* name, SceneSpec* out) {
     s.numObjects = 1;
     s.edgeHoleProbability = 0.6f;
     s.edgeHoleBandPx = 3;
+  } else if (n == "no-depth") {
+    // Moving target (x, y and z sways) that reads no depth for 70 frames, moving in depth
+    // meanwhile: what colour alone must hold.
+    startAt(&t.motion, -100.f, 200.f, 2000.f);
+    t.motion.amplitudeMm[0] = 500.f;
+    t.motion.periodS[0] = 5.f;
+    t.motion.amplitudeMm[1] = 60.f;
+    t.motion.periodS[1] = 3.f;
+    t.motion.amplitudeMm[2] = 300.f;
+    t.motion.periodS[2] = 6.f;
+    s.objects[0] = t;
+    s.numObjects = 1;
+    s.targetNoDepthFirst = 40;
+    s.targetNoDepthLast = 109;
   } else {  // box
     SceneObject b = texturedBox(90.f, 60.f, 160.f,
                                 {TextureKind::Patches, {230, 200, 40}, {40, 40, 40}, 202, 4.f});
@@ -502,6 +516,11 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
 
   applyDepthModel(out, frameSeed);
   if (_spec.edgeHoleProbability > 0.f) applyEdgeHoles(out, frameSeed);
+  if (index >= _spec.targetNoDepthFirst && index <= _spec.targetNoDepthLast) {
+    uint16_t* depth = out.depthMm.data();
+    for (int i = 0; i < w * h; ++i)
+      if (_owner[i] == target) depth[i] = 0;
+  }
 
   out.hasGroundTruth = true;
   out.groundTruth = visible > 0 ? _truth.projectedBox : Box{};

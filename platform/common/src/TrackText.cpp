@@ -62,6 +62,7 @@ ctp_track_t toTrackMessage(const TrackResult& r, uint64_t frameTimeUs, uint32_t 
   }
   if (r.learned) t.flags |= CTP_FLAG_LEARNED;
   if (r.occluded) t.flags |= CTP_FLAG_OCCLUDED;
+  if (r.depthPredicted) t.flags |= CTP_FLAG_DEPTH_PREDICTED;
   float c = r.confidence;
   if (!(c >= 0.f)) c = 0.f;
   if (c > 1.f) c = 1.f;
@@ -75,30 +76,31 @@ size_t formatTrackLine(const ctp_track_t& t, char* buf, size_t cap) {
     std::snprintf(mm, sizeof mm, "%" PRId32 ",%" PRId32 ",%" PRId32, t.centre_mm[0], t.centre_mm[1],
                   t.centre_mm[2]);
   }
-  const int n = std::snprintf(buf, cap,
-                              "track seq=%" PRIu32 " t=%" PRIu64
-                              "us %s box=%d,%d,%d,%d mm=%s conf=%.3f%s%s proc=%" PRIu32 "us\n",
-                              t.seq, t.time_us, ctp_state_name(t.state), t.box_px[0], t.box_px[1],
-                              t.box_px[2], t.box_px[3], mm, confidenceOf(t),
-                              (t.flags & CTP_FLAG_LEARNED) ? " learned" : "",
-                              (t.flags & CTP_FLAG_OCCLUDED) ? " occluded" : "", t.proc_us);
+  const int n = std::snprintf(
+      buf, cap,
+      "track seq=%" PRIu32 " t=%" PRIu64 "us %s box=%d,%d,%d,%d mm=%s conf=%.3f%s%s%s proc=%" PRIu32
+      "us\n",
+      t.seq, t.time_us, ctp_state_name(t.state), t.box_px[0], t.box_px[1], t.box_px[2], t.box_px[3],
+      mm, confidenceOf(t), (t.flags & CTP_FLAG_LEARNED) ? " learned" : "",
+      (t.flags & CTP_FLAG_OCCLUDED) ? " occluded" : "",
+      (t.flags & CTP_FLAG_DEPTH_PREDICTED) ? " depth-predicted" : "", t.proc_us);
   return finish(n, cap);
 }
 
 const char* trackCsvHeader() {
   return "seq,time_us,state,x_px,y_px,w_px,h_px,has_3d,x_mm,y_mm,z_mm,confidence,learned,proc_us,"
-         "occluded\n";
+         "occluded,depth_predicted\n";
 }
 
 size_t formatTrackCsvRow(const ctp_track_t& t, char* buf, size_t cap) {
-  const int n = std::snprintf(buf, cap,
-                              "%" PRIu32 ",%" PRIu64 ",%s,%d,%d,%d,%d,%d,%" PRId32 ",%" PRId32
-                              ",%" PRId32 ",%.5f,%d,%" PRIu32 ",%d\n",
-                              t.seq, t.time_us, ctp_state_name(t.state), t.box_px[0], t.box_px[1],
-                              t.box_px[2], t.box_px[3], (t.flags & CTP_FLAG_HAS_3D) ? 1 : 0,
-                              t.centre_mm[0], t.centre_mm[1], t.centre_mm[2], confidenceOf(t),
-                              (t.flags & CTP_FLAG_LEARNED) ? 1 : 0, t.proc_us,
-                              (t.flags & CTP_FLAG_OCCLUDED) ? 1 : 0);
+  const int n = std::snprintf(
+      buf, cap,
+      "%" PRIu32 ",%" PRIu64 ",%s,%d,%d,%d,%d,%d,%" PRId32 ",%" PRId32 ",%" PRId32
+      ",%.5f,%d,%" PRIu32 ",%d,%d\n",
+      t.seq, t.time_us, ctp_state_name(t.state), t.box_px[0], t.box_px[1], t.box_px[2], t.box_px[3],
+      (t.flags & CTP_FLAG_HAS_3D) ? 1 : 0, t.centre_mm[0], t.centre_mm[1], t.centre_mm[2],
+      confidenceOf(t), (t.flags & CTP_FLAG_LEARNED) ? 1 : 0, t.proc_us,
+      (t.flags & CTP_FLAG_OCCLUDED) ? 1 : 0, (t.flags & CTP_FLAG_DEPTH_PREDICTED) ? 1 : 0);
   return finish(n, cap);
 }
 

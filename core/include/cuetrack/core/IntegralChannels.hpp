@@ -38,6 +38,9 @@ class IntegralChannels {
   const FrameTables& tables() const { return _t; }
   // Mean valid depth in frame rectangle r [mm]; 0 when it has no valid pixel.
   float meanDepthMm(const PixelRect& r) const;
+  // The fraction of frame rectangle r's pixels with valid depth; 0 when r is empty or
+  // outside the tabulated region.
+  float validDepthFraction(const PixelRect& r) const;
 
  private:
   uint32_t _gray[kMaxIntegralCells];

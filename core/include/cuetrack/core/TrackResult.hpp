@@ -33,6 +33,9 @@ struct TrackResult {
   // 3D (occlusionGate): the target is hidden behind a nearer surface; state is Tracking,
   // box and positionMm are where it was last seen, and the search for it goes on.
   bool occluded = false;
+  // 3D: the target's box has too little valid depth (tuning::kMinDepthSupport): positionMm's
+  // depth is predicted from its motion, not measured, and colour alone placed the box.
+  bool depthPredicted = false;
   StageTimesUs timesUs{};
 };
 

@@ -92,6 +92,8 @@ class Tracker {
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
   bool covered(const Frame& frame, const Particle& q) const;  // occlusionGate
   void hold(const Frame& frame, const Estimate& e);  // occlusionGate: lost behind something
+  // 3D: q's box has enough valid depth (tuning::kMinDepthSupport) for its depth to be measured.
+  bool depthMeasured(const Frame& frame, const Particle& q) const;
   void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
   void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
   // One particle in correlation::kEvery drawn at window c from `from`, and scored.

@@ -153,4 +153,10 @@ inline constexpr float kCoveredAbove = 0.25f;
 inline constexpr float kMaxHoldS = 2.f;
 }  // namespace occlusion
 
+// 3D: under this fraction of valid depth pixels in the inner half of the target's box
+// (a black, glossy or sunlit surface; nearer than the Kinect's 0.5 m), its depth is not
+// measured: the particles keep their predicted depth (correctDepth finds no surface) and
+// colour alone places the box. TrackResult::depthPredicted says so.
+inline constexpr float kMinDepthSupport = 0.25f;
+
 }  // namespace cuetrack::tuning

@@ -135,6 +135,10 @@ struct SceneSpec {
   // drawn per pixel and frame from the seed. 0 (the default): off.
   float edgeHoleProbability = 0.f;
   int edgeHoleBandPx = 3;
+  // Frames [targetNoDepthFirst, targetNoDepthLast] the target's own pixels read 0: a black,
+  // glossy or sunlit surface the projector's pattern is lost on. -1 (the default): off.
+  int targetNoDepthFirst = -1;
+  int targetNoDepthLast = -1;
 };
 
 // Fills *out with a named scene at 640x480, 150 frames, 30 fps; false for an unknown name.
@@ -160,6 +164,8 @@ struct SceneSpec {
 //                 width changes ~2.6x
 //   edge-holes    moving target whose depth drops out on a 3 px band along its silhouette
 //                 (edgeHoleProbability), on top of the projector shadow
+//   no-depth      moving target whose whole surface reads no depth for 70 frames (40-109):
+//                 only colour sees it then (targetNoDepthFirst/Last)
 bool makeScene(const char* name, SceneSpec* out);
 int sceneCount();
 const char* sceneName(int i);  // nullptr when out of range
