@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The development set in one command: cuetrack-bench over every sequence of
 # ../shared/data/otb (13 real videos), ../shared/data/bobot (BoBoT C, E, H), the
-# synthetic RGB-D scenes of cuetrack-synth --list (15) and, when
+# synthetic RGB-D scenes of cuetrack-synth --list (16) and, when
 # ../shared/data/kinect-stills is there, 4 synthetic scenes in real Kinect stills
-# (still:, scripts/still_seqs.sh): 35 sequences, CONFIG... (default: best 1.1) with 5
+# (still:, scripts/still_seqs.sh): 36 sequences, CONFIG... (default: best 1.1) with 5
 # seeds each, beside OpenCV's CSRT, KCF and MedianFlow (deterministic: run once, cached).
 #
 #   scripts/devset.sh [CONFIG...]        e.g. scripts/devset.sh best best-nolost 1.1
