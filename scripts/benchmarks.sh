@@ -290,9 +290,10 @@ page="$OUT/benchmarks.md"
   echo "|---|---:|---|"
   printf '%s' "$speed_rows"
   echo
-  echo "While lost, a frame costs more: the integral tables cover the whole image, the"
-  echo "correlation template searches 3 tiles of it (each 3 x 3 sides of the last window), and"
-  echo "half the particles are fresh windows anywhere. best's update time by state, seed 1 (µs;"
+  echo "While lost, the integral tables cover the whole image, the correlation template searches"
+  echo "3 tiles of it (each 3 x 3 sides of the last window), and half the particles are fresh"
+  echo "windows anywhere; yet a lost frame costs about what a tracked one does (it learns"
+  echo "nothing). best's update time by state, seed 1 (µs;"
   echo "\`cuetrack --source synth:SCENE --out F.csv\`, column proc_us):"
   echo
   echo "| scene | state | frames | median µs | max µs |"
