@@ -78,7 +78,7 @@ float IntegralChannels::meanDepthMm(const PixelRect& r) const {
 
 float IntegralChannels::validDepthFraction(const PixelRect& r) const {
   int x0, y0, x1, y1;
-  if (r.width() <= 0 || r.height() <= 0 || !toTable(r, _t, &x0, &y0, &x1, &y1)) return 0.f;
+  if (!toTable(r, _t, &x0, &y0, &x1, &y1)) return 0.f;  // also when r is empty
   return detail::rect(_count, _t.stride, x0, y0, x1, y1) /
          static_cast<float>(r.width() * r.height());
 }

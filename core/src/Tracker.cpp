@@ -361,16 +361,16 @@ bool Tracker::covered(const Frame& frame, const Particle& q) const {
   if (!_is3d || !_config.occlusionGate || !frame.hasDepth()) return false;
   // The target's own box (not the padded window), against its front surface.
   const float frontMm = q.p[2] - 0.5f * q.size[0];
-  return occlusion::nearerFraction(frame.depthMm, _padding.toTarget(particleBox(q)),
+  return occlusion::nearerFraction(frame.depthMm, targetBox(q),
                                    occlusion::occluderBelowMm(frontMm, q.size[0])) >
          tuning::occlusion::kCoveredAbove;
 }
 
-bool Tracker::depthMeasured(const Frame& frame, const Particle& q) const {
-  if (!frame.hasDepth()) return false;
+bool Tracker::depthMeasured(const Particle& q) const {
   // The inner half of the target's own box: a cylinder's or a turned box's silhouette
-  // leaves background at the corners of its box.
-  const Box b = _padding.toTarget(particleBox(q));
+  // leaves background at the corners of its box. (A frame without depth has none in the
+  // tables.)
+  const Box b = targetBox(q);
   const Box inner{b.x + 0.25f * b.w, b.y + 0.25f * b.h, 0.5f * b.w, 0.5f * b.h};
   return _channels.validDepthFraction(clipBox(inner, _imageW, _imageH)) >= tuning::kMinDepthSupport;
 }
@@ -556,12 +556,12 @@ TrackResult Tracker::update(const Frame& frame) {
   if (_holding) {
     r.state = TrackState::Tracking;
     r.occluded = true;
-    r.box = _padding.toTarget(particleBox(at));
+    r.box = targetBox(at);
   }
   if (_is3d) {
     r.hasPosition3d = true;
     for (int a = 0; a < 3; ++a) r.positionMm[a] = at.p[a];
-    r.depthPredicted = !depthMeasured(frame, at);
+    r.depthPredicted = !depthMeasured(at);
   }
   if (_clock != nullptr) {
     r.timesUs.predict = static_cast<uint32_t>((t1 - t0) + (t3 - t2));

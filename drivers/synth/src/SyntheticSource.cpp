@@ -160,6 +160,18 @@ void startAt(MotionSpec* m, float xMm, float yMm, float zMm) {
   m->startMm[2] = zMm;
 }
 
+// Carried around at 2 m: sways of xAmplitudeMm across (5 s), 60 mm up and down (3 s) and
+// 300 mm in depth (6 s).
+void carriedAround(MotionSpec* m, float xAmplitudeMm) {
+  startAt(m, -100.f, 200.f, 2000.f);
+  m->amplitudeMm[0] = xAmplitudeMm;
+  m->periodS[0] = 5.f;
+  m->amplitudeMm[1] = 60.f;
+  m->periodS[1] = 3.f;
+  m->amplitudeMm[2] = 300.f;
+  m->periodS[2] = 6.f;
+}
+
 }  // namespace
 
 int sceneCount() {
@@ -311,13 +323,7 @@ bool makeScene(const char* name, SceneSpec* out) {
     // The target carried around (x, y and z sways), a "hand" (140 x 50 x 120 mm box, skin
     // tones in finger-wide stripes) 115 mm in front of its centre over its lower right
     // half, sliding +-20 mm across it.
-    startAt(&t.motion, -100.f, 200.f, 2000.f);
-    t.motion.amplitudeMm[0] = 450.f;
-    t.motion.periodS[0] = 5.f;
-    t.motion.amplitudeMm[1] = 60.f;
-    t.motion.periodS[1] = 3.f;
-    t.motion.amplitudeMm[2] = 300.f;
-    t.motion.periodS[2] = 6.f;
+    carriedAround(&t.motion, 450.f);
     t.motion.phaseRad[2] = 1.f;
     SceneObject hand = texturedBox(
         70.f, 25.f, 120.f, {TextureKind::Stripes, {222, 170, 138}, {196, 142, 112}, 1, 2.5f});
@@ -357,13 +363,7 @@ bool makeScene(const char* name, SceneSpec* out) {
   } else if (n == "no-depth") {
     // Moving target (x, y and z sways) that reads no depth for 70 frames, moving in depth
     // meanwhile: what colour alone must hold.
-    startAt(&t.motion, -100.f, 200.f, 2000.f);
-    t.motion.amplitudeMm[0] = 500.f;
-    t.motion.periodS[0] = 5.f;
-    t.motion.amplitudeMm[1] = 60.f;
-    t.motion.periodS[1] = 3.f;
-    t.motion.amplitudeMm[2] = 300.f;
-    t.motion.periodS[2] = 6.f;
+    carriedAround(&t.motion, 500.f);
     s.objects[0] = t;
     s.numObjects = 1;
     s.targetNoDepthFirst = 40;

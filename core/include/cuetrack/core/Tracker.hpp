@@ -93,7 +93,7 @@ class Tracker {
   bool covered(const Frame& frame, const Particle& q) const;  // occlusionGate
   void hold(const Frame& frame, const Estimate& e);  // occlusionGate: lost behind something
   // 3D: q's box has enough valid depth (tuning::kMinDepthSupport) for its depth to be measured.
-  bool depthMeasured(const Frame& frame, const Particle& q) const;
+  bool depthMeasured(const Particle& q) const;
   void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
   void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
   // One particle in correlation::kEvery drawn at window c from `from`, and scored.
@@ -109,6 +109,8 @@ class Tracker {
 
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
   Box particleBox(const Particle& q) const;
+  // The target's own box of particle q: its window less any small-target padding.
+  Box targetBox(const Particle& q) const { return _padding.toTarget(particleBox(q)); }
   Box clampToImage(const Box& b) const;
   void addNegatives(const Box& around, int count, const PixelRect& roi);
   void addExample(const Box& win, bool positive);
