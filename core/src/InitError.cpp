@@ -11,7 +11,7 @@ const char* toString(InitError e) {
     case InitError::BoxOutsideImage:
       return "box does not intersect the image";
     case InitError::BoxTooSmall:
-      return "box smaller than 6x6 px (the smallest target tracked)";
+      return "box smaller than 3x3 px (the smallest target tracked)";
     case InitError::NoColour:
       return "frame has no colour image";
     case InitError::ImageTooLarge:

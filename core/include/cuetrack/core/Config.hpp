@@ -14,7 +14,7 @@ inline constexpr int kMaxPixels = kMaxImageWidth * kMaxImageHeight;  // 307,200
 // The smallest window side [px] of particles and negatives.
 inline constexpr float kMinWindowPx = 8.f;
 // The smallest first box a user may give [px] (tracked padded: WindowPadding.hpp).
-inline constexpr float kMinTargetPx = 6.f;
+inline constexpr float kMinTargetPx = 3.f;
 // Integral images carry one extra zero row and column.
 inline constexpr int kMaxIntegralWidth = kMaxImageWidth + 1;
 inline constexpr int kMaxIntegralHeight = kMaxImageHeight + 1;
