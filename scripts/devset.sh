@@ -7,14 +7,17 @@
 # seeds each, beside OpenCV's CSRT, KCF and MedianFlow (deterministic: run once, cached).
 #
 #   scripts/devset.sh [CONFIG...]        e.g. scripts/devset.sh best best-nolost 1.1
+#   SET=real scripts/devset.sh best      the real videos alone (otb + BoBoT C, E, H)
 #
-# Prints one row per sequence and the averages with their seed-to-seed spread, AUC and
+# Prints first the real videos' average (overlap with its seed spread, hit rate) for each
+# tracker: the figure that counts. Then one row per sequence and the averages with their seed-to-seed spread, AUC and
 # precision at 20 px; writes OTB success and precision plots. The rule for a tracking
 # change (docs/algorithm.md): keep it only if the average overlap rises by more than the
 # spread and no sequence falls by more than it.
 # Environment: CUETRACK_SHARED_DIR (default ../shared), BUILD (default build/host),
 # OUT (default build/devset), PEER_CACHE (default $OUT/peer-cache), RUNS (5), PEERS (opencv-csrt,opencv-kcf,opencv-medianflow;
-# empty for none), FRAMES (cut every sequence; quick checks only).
+# empty for none), FRAMES (cut every sequence; quick checks only), SET (all, or real: the
+# real videos only, the figure that counts).
 # Exit: 0 done; 1 a sequence or output failed; 77 no ../shared (skipped, with a message).
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -25,6 +28,8 @@ OUT=${OUT:-build/devset}
 RUNS=${RUNS:-5}
 PEERS=${PEERS-opencv-csrt,opencv-kcf,opencv-medianflow}
 FRAMES=${FRAMES:-}
+SET=${SET:-all}
+case "$SET" in all|real) ;; *) echo "devset.sh: SET must be all or real, not '$SET'" >&2; exit 2 ;; esac
 configs=("$@")
 [ ${#configs[@]} -eq 0 ] && configs=(best 1.1)
 
@@ -49,9 +54,12 @@ mapfile -t SCENES < <("$SYNTH" --list)
 seqs=()
 for d in "$SHARED"/data/otb/*/; do [ -f "$d/groundtruth_rect.txt" ] && seqs+=("${d%/}"); done
 for v in "$SHARED"/data/bobot/*.avi; do seqs+=("$v"); done
-for s in "${SCENES[@]}"; do seqs+=("synth:$s"); done
-source scripts/still_seqs.sh  # still_seqs: empty without the stills
-seqs+=("${still_seqs[@]}")
+nreal=${#seqs[@]}  # the real videos come first: devset_table.py's first line
+if [ "$SET" = all ]; then
+  for s in "${SCENES[@]}"; do seqs+=("synth:$s"); done
+  source scripts/still_seqs.sh  # still_seqs: empty without the stills
+  seqs+=("${still_seqs[@]}")
+fi
 
 mkdir -p "$OUT"
 trackers=cuetrack
@@ -65,7 +73,7 @@ cmd=("$BENCH" --quiet --tracker "$trackers" --config "$(IFS=,; echo "${configs[*
 start=$(date +%s)
 status=0
 "${cmd[@]}" > "$OUT/devset-bench.txt" || status=$?
-python3 scripts/devset_table.py "$OUT/devset.json" "$OUT/devset.md"
+python3 scripts/devset_table.py --real "$nreal" "$OUT/devset.json" "$OUT/devset.md"
 echo
 echo "${#seqs[@]} sequences, $RUNS seeds, $(( $(date +%s) - start )) s. Plots: $OUT/plots/success.png," \
      "$OUT/plots/precision.png (and one per sequence); Markdown: $OUT/devset.md; JSON: $OUT/devset.json"

@@ -4,8 +4,11 @@ column per tracker entry (mean overlap over seeds, %), then the averages, their
 seed-to-seed spread, hit rate, AUC and precision at 20 px. With two or more cuetrack
 entries, the last column is the first minus the second, '*' where the difference is
 larger than the spread of either (the team's rule for a change: docs/algorithm.md).
-Usage: devset_table.py DEVSET.json [OUT.md]"""
+With --real N, the first line is the average over the first N sequences (the real
+videos: the figure that counts), each tracker's overlap with its seed spread and hit rate.
+Usage: devset_table.py [--real N] DEVSET.json [OUT.md]"""
 import json
+import statistics
 import sys
 
 
@@ -13,7 +16,32 @@ def fmt(v, d=1):
     return "n/a" if v is None else f"{v:.{d}f}"
 
 
+def group_line(entries, labels, n):
+    """The average of the first n sequences per tracker: overlap (seed spread), hit rate."""
+    parts = []
+    for e, l in zip(entries, labels):
+        seqs = [s for s in e["sequences"][:n] if s["overlap"] is not None]
+        if not seqs:
+            parts.append(f"{l} not run")
+            continue
+        # A sequence a tracker cannot start on scores 0 (it gives no track).
+        over = sum(s["overlap"] for s in seqs) / n
+        hit = sum(s["hit"] for s in seqs) / n
+        runs = [s["overlap_runs"] for s in seqs if s.get("overlap_runs")]
+        spread = ""
+        if runs and len(runs) == len(seqs) and min(len(r) for r in runs) > 1:
+            k = min(len(r) for r in runs)
+            per_seed = [sum(r[i] for r in runs) / n for i in range(k)]
+            spread = f" (spread {statistics.stdev(per_seed):.2f})"
+        parts.append(f"{l} {over:.2f}{spread} hit {hit:.2f}")
+    return f"real videos ({n}): overlap / hit rate [%]: " + "; ".join(parts)
+
+
 def main():
+    real = 0
+    if len(sys.argv) > 2 and sys.argv[1] == "--real":
+        real = int(sys.argv[2])
+        del sys.argv[1:3]
     entries = json.load(open(sys.argv[1]))
     if isinstance(entries, dict):
         entries = [entries]
@@ -59,6 +87,9 @@ def main():
     widths = [max(len(str(r[i])) for r in [head] + rows + summary) for i in range(len(head))]
     line = lambda r: "  ".join(str(c).ljust(widths[0]) if i == 0 else str(c).rjust(widths[i])
                                for i, c in enumerate(r))
+    first = group_line(entries, label, real) if real > 0 else None
+    if first:
+        print(first)
     print("Mean overlap [%] over seeds, per sequence; averages over the sequences")
     print(line(head))
     for r in rows:
@@ -68,6 +99,8 @@ def main():
         print(line(r))
     if len(sys.argv) > 2:
         with open(sys.argv[2], "w") as f:
+            if first:
+                f.write(first + "\n\n")
             f.write("| " + " | ".join(head) + " |\n|---|" + "---:|" * (len(head) - 1) + "\n")
             for r in rows:
                 f.write("| " + " | ".join(r) + " |\n")
