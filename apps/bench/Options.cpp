@@ -57,7 +57,8 @@ const char* usage() {
          "                     best-fixedsize, best-nofastmotion, best-nocorrelation,\n"
          "                     best-noocclusion;\n"
          "                     or a paper preset with 2D negatives centred:\n"
-         "                     1.1-centrednegatives\n"
+         "                     1.1-centrednegatives; or best-filter (the correlation\n"
+         "                     filter as the correlation cue, not the gray template)\n"
          "                     (repeatable; default best)\n"
          "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
          "  --peer-runs N      runs for the OpenCV peers (default: --runs)\n"
@@ -167,7 +168,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
         if (!isCuetrackConfig(c)) {
           *err = "--config: unknown configuration '" + c +
                  "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
-                 "best-nofastmotion, best-nocorrelation, 1.1-centrednegatives)";
+                 "best-nofastmotion, best-nocorrelation, 1.1-centrednegatives; best-filter)";
           return false;
         }
         configs.push_back(c);

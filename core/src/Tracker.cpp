@@ -174,7 +174,8 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   addNegatives(b, _set.numNegatives() + tuning::training::kExamples, roi);  // fill the FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
   train();
-  if (_config.correlationCue) _corr.reset(_channels.tables(), b);
+  if (_config.correlationCue && _config.correlationFilter) _dcf.reset(frame.rgb, b);
+  if (_config.correlationCue && !_config.correlationFilter) _corr.reset(_channels.tables(), b);
 
   _sizer.clear();
   if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
@@ -189,7 +190,9 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
 
 void Tracker::learn(const Box& estimate, const PixelRect& roi) {
   addExample(estimate, true);
-  if (_config.correlationCue)
+  if (_config.correlationCue && _config.correlationFilter)
+    _dcf.learn(_rgb, estimate, tuning::dcf::kLearnRate);
+  if (_config.correlationCue && !_config.correlationFilter)
     _corr.learn(_channels.tables(), estimate, tuning::correlation::kLearnRate);
   addNegatives(estimate, tuning::training::kNegativesPerUpdate, roi);
   if (_config.dynamicPool && _config.sampling == FeatureSampling::Sparse) {
@@ -242,8 +245,11 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
                     static_cast<float>(roi.width()) + 2.f * m * meanW,
                     static_cast<float>(roi.height()) + 2.f * m * meanH},
                 _imageW, _imageH);
-  if (_config.correlationCue && !wasLost && _corr.ready())
-    roi = unite(roi, clipBox(CorrelationCue::region(_lastBox), _imageW, _imageH));
+  if (_config.correlationCue && !wasLost && (_corr.ready() || _dcf.ready())) {
+    const Box around = _config.correlationFilter ? CorrelationFilter::region(_lastBox)
+                                                 : CorrelationCue::region(_lastBox);
+    roi = unite(roi, clipBox(around, _imageW, _imageH));
+  }
   // Lost: the template searches the whole image, a few tiles a frame.
   if (_config.correlationCue && wasLost) roi = PixelRect{0, 0, _imageW, _imageH};
   if (roi.width() < 2 || roi.height() < 2) roi = PixelRect{0, 0, _imageW, _imageH};
@@ -348,6 +354,12 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     }
     learn(clampToImage(e.box), roi);
     learned = true;
+  } else if (_config.correlationCue && _config.correlationFilter && !miss && !e.box.empty() &&
+             _state == TrackState::Tracking && !_lost.onProbation()) {
+    // The filter follows the target on every frame it is tracked, not only on those fit
+    // for the classifier: its negatives are the context itself, and a filter left behind
+    // by a turning or deforming target loses it (measured: docs/algorithm.md).
+    _dcf.learn(_rgb, clampToImage(e.box), tuning::dcf::kLearnRate);
   }
   // The depth the target was last confirmed at: learnt, or found again (it may have
   // moved in depth while hidden).
@@ -444,44 +456,51 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
     _scores[_movedIndex[k]] = _movedValid[k] != 0 ? _movedScores[k] : -1.f;
 }
 
+bool Tracker::searchCue(const Box& around, bool scales) {
+  return _config.correlationFilter ? _dcf.search(_rgb, around, scales)
+                                   : _corr.search(_channels.tables(), around);
+}
+
 void Tracker::correlate(float dtS) {
-  if (!_corr.search(_channels.tables(), _lastBox)) return;
+  if (!searchCue(_lastBox, true)) return;
   _corrActive = true;
   // Some particles onto the peak, when there is one (the target may have jumped where the
   // cloud did not reach), moving on as it jumped.
-  if (_corr.peak() >= tuning::correlation::kMinPeak)
-    drawAt(_corr.peakBox(), _prevEstimate, dtS, true);
+  if (cuePeak() >= cueMinPeak()) drawAt(cuePeakBox(), _prevEstimate, dtS, true);
   const int n = _filter.size();
   for (int i = 0; i < n; ++i) {
     const Box& b = _boxes[i];
-    _corrScores[i] =
-        b.empty() ? CorrelationCue::kNoResponse : _corr.at(b.x + 0.5f * b.w, b.y + 0.5f * b.h);
+    const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
+    _corrScores[i] = b.empty()                   ? CorrelationCue::kNoResponse
+                     : _config.correlationFilter ? _dcf.at(u, v)
+                                                 : _corr.at(u, v);
   }
 }
 
 void Tracker::scanLost(float dtS) {
   // While lost: the template searched over the image, a few tiles a frame at the last
   // learnt size, the tiles' best peak (if strong enough) given particles to confirm.
-  if (!_corr.ready()) return;
+  if (!(_config.correlationFilter ? _dcf.ready() : _corr.ready())) return;
   const Box last = particleBox(_lastEstimate);
   if (last.empty()) return;
-  // A search covers window positions within kReach cells (1.5 sides) of its centre: tiles
-  // 3 sides apart cover the image.
-  constexpr float step =
-      2.f * static_cast<float>(CorrelationCue::kReach) / static_cast<float>(CorrelationCue::kCells);
+  // A search covers window positions within kReach cells (1.5 sides) of its centre (the
+  // filter: kPadding / 2 sides): tiles 3 (kPadding) sides apart cover the image.
+  const float step = _config.correlationFilter ? CorrelationFilter::kPadding
+                                               : 2.f * static_cast<float>(CorrelationCue::kReach) /
+                                                     static_cast<float>(CorrelationCue::kCells);
   const int nx = 1 + static_cast<int>((static_cast<float>(_imageW) - last.w) / (step * last.w));
   const int ny = 1 + static_cast<int>((static_cast<float>(_imageH) - last.h) / (step * last.h));
   const int tiles = nx * ny;
-  float best = tuning::correlation::kMinPeak;
+  float best = cueMinPeak();
   Box found{};
   for (int j = 0; j < tuning::correlation::kScanTilesPerFrame && j < tiles; ++j) {
     const int t = _scanTile++ % tiles;
     if (_scanTile >= tiles) _scanTile = 0;
     const Box around{(0.5f * step + static_cast<float>(t % nx) * step) * last.w,
                      (0.5f * step + static_cast<float>(t / nx) * step) * last.h, last.w, last.h};
-    if (_corr.search(_channels.tables(), around) && _corr.peak() >= best) {
-      best = _corr.peak();
-      found = _corr.peakBox();
+    if (searchCue(around, false) && cuePeak() >= best) {
+      best = cuePeak();
+      found = cuePeakBox();
     }
   }
   if (!found.empty()) drawAt(found, _lastEstimate, dtS, false);
@@ -516,6 +535,7 @@ TrackResult Tracker::update(const Frame& frame) {
   _lastTimeUs = frame.timeUs;
   const bool wasLost = _state == TrackState::Lost;
   if (wasLost) ++_lostFrames;
+  _rgb = frame.rgb;
 
   // Predict, and tabulate the region the particles (and negatives around them) can touch.
   const PixelRect roi = predict(dtS, framesElapsed, wasLost);

@@ -13,6 +13,7 @@
 
 #include "cuetrack/core/Clock.hpp"
 #include "cuetrack/core/CorrelationCue.hpp"
+#include "cuetrack/core/CorrelationFilter.hpp"
 #include "cuetrack/core/CylinderSizer.hpp"
 #include "cuetrack/core/DepthGuard.hpp"
 #include "cuetrack/core/DepthMedian.hpp"
@@ -96,6 +97,13 @@ class Tracker {
   bool depthMeasured(const Particle& q) const;
   void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
   void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
+  // correlationFilter: the same from the correlation filter (CorrelationFilter) instead.
+  bool searchCue(const Box& around, bool scales);
+  float cuePeak() const { return _config.correlationFilter ? _dcf.peak() : _corr.peak(); }
+  Box cuePeakBox() const { return _config.correlationFilter ? _dcf.peakBox() : _corr.peakBox(); }
+  float cueMinPeak() const {
+    return _config.correlationFilter ? tuning::dcf::kMinPeak : tuning::correlation::kMinPeak;
+  }
   // One particle in correlation::kEvery drawn at window c from `from`, and scored.
   void drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity);
   // Whether particle q's window b is scored (else -1). While searching (lost) it must lie
@@ -140,6 +148,8 @@ class Tracker {
   Particle _lastEstimate{};
   Particle _prevEstimate{};  // the last frame's estimate (correlate() moves it)
   CorrelationCue _corr;
+  CorrelationFilter _dcf;            // correlationFilter: instead of _corr
+  RgbView _rgb{};                    // update()'s colour image, for _dcf
   bool _corrActive = false;          // this frame's map was searched
   int _scanTile = 0;                 // scanLost: the next tile
   float _corrScores[kMaxParticles];  // the template's response at each particle
