@@ -71,7 +71,9 @@ CLI::Option* Command::flag(const std::string& name, const std::string& help, boo
 
 CLI::Option* Command::positionals(const std::string& name, const std::string& help,
                                   std::vector<std::string>* out) {
-  return _app.add_option(name, *out, help)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  return _app.add_option(name, *out, help)
+      ->type_name("")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
 bool Command::given(const std::string& name) const {
