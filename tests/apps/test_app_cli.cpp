@@ -18,7 +18,7 @@ struct Parsed {
   std::string scene = "moving";
   bool hash = false;
   Box box{};
-  std::vector<std::string> inputs;
+  std::vector<std::string> inputs, sends;
 };
 
 Parsed parse(std::vector<const char*> args, cli::Quotes q = cli::Quotes::Value) {
@@ -28,6 +28,7 @@ Parsed parse(std::vector<const char*> args, cli::Quotes q = cli::Quotes::Value) 
   cmd.text("--scene", "NAME", "scene", &p.scene);
   cmd.flag("--hash", "hash", &p.hash);
   cmd.option("--box", "X,Y,W,H", "box", [&p](const std::string& v) { return cli::box(v, &p.box); });
+  cmd.list("--send", "CMD", "sends", &p.sends);
   cmd.positionals("INPUT", "inputs", &p.inputs);
   args.insert(args.begin(), "tool");
   p.rc = cmd.parse(static_cast<int>(args.size()), args.data());
@@ -51,6 +52,14 @@ TEST_CASE("--opt value and --opt=value are the same option") {
   CHECK(none.rc == -1);
   CHECK(none.frames == 7);  // defaults stay
   CHECK_FALSE(none.hash);
+}
+
+TEST_CASE("a repeatable option takes one value each time") {
+  const Parsed p = parse({"--send", "a", "in1", "--send=b", "--send", "c", "in2"});
+  CHECK(p.rc == -1);
+  CHECK(p.sends == std::vector<std::string>{"a", "b", "c"});
+  CHECK(p.inputs == std::vector<std::string>{"in1", "in2"});
+  CHECK(parse({"--send"}).rc == cli::kExitUsage);
 }
 
 TEST_CASE("a bad command line is exit code 2") {
@@ -123,7 +132,7 @@ TEST_CASE("boxes, sizes, baud rates, HOST:PORT, choices") {
   int baud = 0;
   CHECK(cli::baudRate("921600", &baud).empty());
   CHECK(baud == 921600);
-  CHECK(cli::baudRate("300", &baud) == "unsupported (9600..921600, see --help)");
+  CHECK(cli::baudRate("300", &baud) == "unsupported (9600..921600)");
   CHECK(cli::baudRate("fast", &baud) == "not a number");
   CHECK(cli::hostPort("127.0.0.1:14550").empty());
   CHECK(cli::hostPort("[::1]:14550").empty());

@@ -16,8 +16,11 @@ target_include_directories(fuzz_listen_seq PRIVATE ${_app}/listen/src)
 cuetrack_add_fuzzer(source_spec SOURCES ${CMAKE_CURRENT_LIST_DIR}/apps/fuzz_source_spec.cpp
   LIBS cuetrack_open_source)
 
+# Through the command-line layer (apps/common, CLI11): its Command.cpp is compiled in too,
+# the value checks come from its library.
 cuetrack_add_fuzzer(listen_options SOURCES ${CMAKE_CURRENT_LIST_DIR}/apps/fuzz_listen_options.cpp
   ${_app}/listen/src/ListenOptions.cpp ${CMAKE_SOURCE_DIR}/platform/common/src/CommandText.cpp
-  LIBS cuetrack_proto)
+  ${_app}/common/src/Command.cpp
+  LIBS cuetrack_proto cuetrack_cli)
 target_include_directories(fuzz_listen_options PRIVATE ${_app}/listen/src
   ${CMAKE_SOURCE_DIR}/platform/common/include)

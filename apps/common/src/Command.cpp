@@ -89,33 +89,62 @@ int Command::fail(const std::string& line) const {
   return kExitUsage;
 }
 
-int Command::parse(int argc, const char* const* argv) {
+CLI::Option* Command::list(const std::string& name, const std::string& typeName,
+                           const std::string& help, std::vector<std::string>* out) {
+  return _app.add_option(name, *out, help)
+      ->type_name(typeName)
+      ->expected(1)
+      ->allow_extra_args(false)  // --send A PORT: PORT is not a second --send
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+Command::Parsed Command::check(int argc, const char* const* argv, std::string* error) {
   try {
     _app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
-    std::fputs(_app.help().c_str(), stdout);
-    return platform::stdoutWritten(_tool.c_str()) ? 0 : 1;
+    return Parsed::Help;
   } catch (const BadCommandLine& e) {
-    return fail(e.what());
+    *error = e.what();
+    return Parsed::Error;
   } catch (const CLI::ArgumentMismatch& e) {
     // "--frames: 1 required N missing": an option at the end without its value.
     const std::string what = e.what();
     const size_t colon = what.find(':');
     if (colon != std::string::npos && what.find("missing") != std::string::npos)
-      return fail(what.substr(0, colon) + " needs a value (see --help)");
-    return fail(what + " (see --help)");
+      *error = what.substr(0, colon) + " needs a value (see --help)";
+    else
+      *error = what + " (see --help)";
+    return Parsed::Error;
   } catch (const CLI::ParseError& e) {
-    return fail(std::string(e.what()) + " (see --help)");
+    *error = std::string(e.what()) + " (see --help)";
+    return Parsed::Error;
   }
+  // A repeatable option (list(), positionals) collects every value; any other comes once.
   for (const CLI::Option* o : _app.get_options()) {
-    if (o->get_positional() || o->count() < 2) continue;
-    return fail(o->get_name() + " given twice");
+    if (o->get_multi_option_policy() == CLI::MultiOptionPolicy::TakeAll || o->count() < 2) continue;
+    *error = o->get_name() + " given twice";
+    return Parsed::Error;
   }
   const std::vector<std::string> extra = _app.remaining();
   if (!extra.empty()) {
     const std::string& a = extra.front();
-    return fail((a.size() > 1 && a[0] == '-' ? "unknown option '" : "unexpected argument '") + a +
-                "' (see --help)");
+    *error = (a.size() > 1 && a[0] == '-' ? "unknown option '" : "unexpected argument '") + a +
+             "' (see --help)";
+    return Parsed::Error;
+  }
+  return Parsed::Run;
+}
+
+int Command::parse(int argc, const char* const* argv) {
+  std::string error;
+  switch (check(argc, argv, &error)) {
+    case Parsed::Help:
+      std::fputs(_app.help().c_str(), stdout);
+      return platform::stdoutWritten(_tool.c_str()) ? 0 : 1;
+    case Parsed::Error:
+      return fail(error);
+    case Parsed::Run:
+      break;
   }
   return -1;
 }

@@ -81,7 +81,7 @@ std::string baudRate(const std::string& text, int* out) {
   long b = 0;
   if (!wholeNumber(text, 0, 4000000, &b).empty()) return "not a number";
   if (!platform::SerialPort::baudSupported(static_cast<int>(b)))
-    return "unsupported (9600..921600, see --help)";
+    return "unsupported (9600..921600)";
   *out = static_cast<int>(b);
   return "";
 }

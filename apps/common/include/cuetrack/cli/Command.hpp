@@ -57,9 +57,16 @@ class Command {
   CLI::Option* positionals(const std::string& name, const std::string& help,
                            std::vector<std::string>* out);
 
+  // A repeatable option (--send A --send B): every value, in order.
+  CLI::Option* list(const std::string& name, const std::string& typeName, const std::string& help,
+                    std::vector<std::string>* out);
+
   // Parses argv. Returns -1 to go on, else what main returns: 0 after --help (1 when
   // stdout could not be written), kExitUsage after one line on stderr.
   int parse(int argc, const char* const* argv);
+  // The same without printing: Help, or Error with the line (without "TOOL: ") in *error.
+  enum class Parsed : uint8_t { Run, Help, Error };
+  Parsed check(int argc, const char* const* argv, std::string* error);
   // A check after parsing (options that need each other, a value known only then): one
   // line on stderr, "TOOL: LINE", and kExitUsage.
   int fail(const std::string& line) const;
