@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -79,8 +80,8 @@ std::string box(const std::string& text, Box* out) {
 
 std::string baudRate(const std::string& text, int* out) {
   long b = 0;
-  if (!wholeNumber(text, 0, 4000000, &b).empty()) return "not a number";
-  if (!platform::SerialPort::baudSupported(static_cast<int>(b)))
+  if (!wholeNumber(text, LONG_MIN, LONG_MAX, &b).empty()) return "not a number";
+  if (b < 1 || b > 4000000 || !platform::SerialPort::baudSupported(static_cast<int>(b)))
     return "unsupported (9600..921600)";
   *out = static_cast<int>(b);
   return "";
