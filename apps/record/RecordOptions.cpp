@@ -1,8 +1,5 @@
 #include "RecordOptions.hpp"
 
-#include <cerrno>
-#include <cstdlib>
-
 #include "cuetrack/cli/Command.hpp"
 #include "cuetrack/cli/Values.hpp"
 
@@ -10,14 +7,9 @@ namespace cuetrack::record {
 
 namespace {
 
-// A number in [lo, hi], the whole of text.
+// A number in [lo, hi], else `want` as the reason.
 std::string decimal(const std::string& text, double lo, double hi, const char* want, double* out) {
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || errno != 0 || *end != '\0' || !(v >= lo && v <= hi)) return want;
-  *out = v;
-  return "";
+  return cli::decimal(text, lo, hi, out).empty() ? std::string() : std::string(want);
 }
 
 const char* kAbout =

@@ -106,6 +106,13 @@ TEST_CASE("whole numbers: decimal digits only, within range") {
     INFO(bad);
     CHECK(cli::wholeNumber(bad, -5, 10, &v) == "expected a whole number in -5..10");
   }
+  double d = 0;
+  CHECK(cli::decimal("-2.5", -27, 27, &d).empty());
+  CHECK(d == -2.5);
+  for (const char* bad : {"", "28", "1x", "nan", "inf", "-27.5"}) {
+    INFO(bad);
+    CHECK_FALSE(cli::decimal(bad, -27, 27, &d).empty());
+  }
   uint64_t s = 0;
   CHECK(cli::seed("18446744073709551615", &s).empty());
   CHECK(s == 18446744073709551615ull);

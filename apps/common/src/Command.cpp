@@ -135,6 +135,13 @@ Command::Parsed Command::check(int argc, const char* const* argv, std::string* e
   return Parsed::Run;
 }
 
+Command::Parsed Command::check(int argc, const char* const* argv, char* error, size_t errorLen) {
+  std::string line;
+  const Parsed parsed = check(argc, argv, &line);
+  if (parsed == Parsed::Error) std::snprintf(error, errorLen, "%s", printable(line).c_str());
+  return parsed;
+}
+
 int Command::parse(int argc, const char* const* argv) {
   std::string error;
   switch (check(argc, argv, &error)) {

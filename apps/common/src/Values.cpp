@@ -27,6 +27,16 @@ std::string wholeNumber(const std::string& text, long lo, long hi, long* out) {
   return "";
 }
 
+std::string decimal(const std::string& text, double lo, double hi, double* out) {
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || errno != 0 || *end != '\0' || !(v >= lo && v <= hi))
+    return "expected a number in " + std::to_string(lo) + ".." + std::to_string(hi);
+  *out = v;
+  return "";
+}
+
 std::string seed(const std::string& text, uint64_t* out) {
   const char* s = text.c_str();
   char* end = nullptr;

@@ -46,6 +46,13 @@ cli::Convert mavlinkId(int* out) {
   };
 }
 
+// Three numbers A,B,C, each within +-limit (--mavlink-mount, --mavlink-offset).
+cli::Convert three(float limit, float* out, const char* why) {
+  return [limit, out, why](const std::string& v) {
+    return cli::numbers(v, 3, limit, out).empty() ? std::string() : std::string(why);
+  };
+}
+
 // Every option of cuetrack, into *o (its texts into o->texts).
 void declare(cli::Command& cmd, AppOptions* o) {
   AppOptions::Texts& t = o->texts;
@@ -105,18 +112,10 @@ void declare(cli::Command& cmd, AppOptions* o) {
              mavlinkId(&o->mavCompId))
       ->group(mavlink);
   cmd.option("--mavlink-mount", "R,P,Y", "camera roll, pitch, yaw on the vehicle [deg]",
-             [o](const std::string& v) {
-               return cli::numbers(v, 3, 360.f, o->mountDeg).empty()
-                          ? ""
-                          : "expected ROLL,PITCH,YAW [deg], each within +-360";
-             })
+             three(360.f, o->mountDeg, "expected ROLL,PITCH,YAW [deg], each within +-360"))
       ->group(mavlink);
   cmd.option("--mavlink-offset", "X,Y,Z", "camera position on the vehicle, body frame FRD [m]",
-             [o](const std::string& v) {
-               return cli::numbers(v, 3, 100.f, o->mountOffsetM).empty()
-                          ? ""
-                          : "expected X,Y,Z [m], each within +-100";
-             })
+             three(100.f, o->mountOffsetM, "expected X,Y,Z [m], each within +-100"))
       ->group(mavlink);
   cmd.option("--mavlink-udp", "HOST:PORT",
              "MAVLink over UDP (a MAVLink router on a companion computer) instead of --serial",
@@ -174,16 +173,9 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
   *out = AppOptions{};
   cli::Command cmd("cuetrack", kAbout, kFooter, cli::Quotes::None);
   declare(cmd, out);
-  std::string error;
-  switch (cmd.check(argc, argv, &error)) {
-    case cli::Command::Parsed::Help:
-      return ParseResult::Help;
-    case cli::Command::Parsed::Error:
-      std::snprintf(err, errLen, "%s", cli::printable(error).c_str());
-      return ParseResult::Error;
-    case cli::Command::Parsed::Run:
-      break;
-  }
+  const cli::Command::Parsed parsed = cmd.check(argc, argv, err, errLen);
+  if (parsed != cli::Command::Parsed::Run)
+    return parsed == cli::Command::Parsed::Help ? ParseResult::Help : ParseResult::Error;
   AppOptions::Texts& t = out->texts;
   auto text = [&cmd](const char* name, const std::string& value) {
     return cmd.given(name) ? value.c_str() : nullptr;

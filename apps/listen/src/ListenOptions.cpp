@@ -75,16 +75,9 @@ ListenParse parseListenOptions(int argc, char** argv, ListenOptions* o, char* er
   cli::Command cmd("cuetrack-listen", kAbout, kFooter, cli::Quotes::None);
   std::vector<std::string> ports;
   declare(cmd, o, &ports);
-  std::string error;
-  switch (cmd.check(argc, argv, &error)) {
-    case cli::Command::Parsed::Help:
-      return ListenParse::Help;
-    case cli::Command::Parsed::Error:
-      std::snprintf(err, errLen, "%s", cli::printable(error).c_str());
-      return ListenParse::Error;
-    case cli::Command::Parsed::Run:
-      break;
-  }
+  const cli::Command::Parsed parsed = cmd.check(argc, argv, err, errLen);
+  if (parsed != cli::Command::Parsed::Run)
+    return parsed == cli::Command::Parsed::Help ? ListenParse::Help : ListenParse::Error;
   if (ports.empty()) {
     std::snprintf(err, errLen, "missing PORT (see --help)");
     return ListenParse::Error;

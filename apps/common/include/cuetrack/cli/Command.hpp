@@ -10,6 +10,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
@@ -67,6 +68,8 @@ class Command {
   // The same without printing: Help, or Error with the line (without "TOOL: ") in *error.
   enum class Parsed : uint8_t { Run, Help, Error };
   Parsed check(int argc, const char* const* argv, std::string* error);
+  // The same with the line, control characters as '?', in a caller's buffer.
+  Parsed check(int argc, const char* const* argv, char* error, size_t errorLen);
   // A check after parsing (options that need each other, a value known only then): one
   // line on stderr, "TOOL: LINE", and kExitUsage.
   int fail(const std::string& line) const;

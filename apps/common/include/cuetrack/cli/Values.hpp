@@ -11,6 +11,8 @@ namespace cuetrack::cli {
 
 // A whole decimal number in [lo, hi]: digits with an optional leading '-', nothing else.
 std::string wholeNumber(const std::string& text, long lo, long hi, long* out);
+// A decimal number in [lo, hi] (strtod's forms, the whole of text; no inf or nan).
+std::string decimal(const std::string& text, double lo, double hi, double* out);
 // A seed: plain digits, 0 .. 2^64-1 ("-1" is not 2^64-1).
 std::string seed(const std::string& text, uint64_t* out);
 // An image size WxH, each side in [minSide, maxW] and [minSide, maxH].
