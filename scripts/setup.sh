@@ -6,6 +6,8 @@ set -euo pipefail
 HOST_PKGS=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev catch2
+  libcli11-dev                       # apps/common: every tool's command line (header-only)
+  nlohmann-json3-dev                 # cuetrack-bench --json and the tests that read it (header-only)
   libopencv-dev                      # host tools only: video decoding, PNG, peer trackers
   libfreenect-dev libfreenect-bin    # Kinect driver + fakenect replay library
   libusb-1.0-0-dev

@@ -2,147 +2,88 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <nlohmann/json.hpp>
 
 namespace cuetrack::bench {
 namespace {
 
-void appendString(std::string& out, const std::string& s) {
-  out += '"';
-  for (const char c : s) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  out += '"';
-}
+// Keys stay in the schema's order (nlohmann::json would sort them).
+using Json = nlohmann::ordered_json;
 
-void appendNumber(std::string& out, double v, int decimals, bool valid = true) {
-  if (!valid || !std::isfinite(v)) {
-    out += "null";
-    return;
-  }
+// A figure as the schema gives it: rounded to `decimals` places (the double nearest
+// printf's "%.Nf", which is what a reader of the earlier, printf-written files got), or
+// null when it does not exist (NaN, an infinity, or `valid` false).
+Json fixed(double v, int decimals, bool valid = true) {
+  if (!valid || !std::isfinite(v)) return nullptr;
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  out += buf;
+  return std::strtod(buf, nullptr);
+}
+
+template <class T>
+Json fixedArray(const T* v, size_t n, int decimals, bool valid) {
+  Json a = Json::array();
+  for (size_t i = 0; valid && i < n; ++i) a.push_back(fixed(v[i], decimals));
+  return a;
 }
 
 // The figures shared by a sequence and the average; `valid` false writes nulls.
-void appendFigures(std::string& out, const Figures& f, bool valid) {
-  out += "\"frames\": ";
-  appendNumber(out, f.frames, 0, true);
-  out += ", \"overlap\": ";
-  appendNumber(out, f.overlap, 3, valid);
-  out += ", \"hit\": ";
-  appendNumber(out, f.hit, 3, valid);
-  out += ", \"pascal\": ";
-  appendNumber(out, f.pascal, 3, valid);
-  out += ", \"center_px\": ";
-  appendNumber(out, f.centerPx, 3, valid);
-  out += ", \"center_mm\": ";
-  appendNumber(out, f.centerMm, 1, valid);
-  out += ", \"center_z_mm\": ";
-  appendNumber(out, f.centerZMm, 1, valid);
-  out += ", \"ms_median\": ";
-  appendNumber(out, f.msMedian, 4, valid);
-  out += ", \"ms_mean\": ";
-  appendNumber(out, f.msMean, 4, valid);
-  out += ", \"allocs\": ";
-  appendNumber(out, f.allocs, 1, valid);
-  out += ", \"auc\": ";
-  appendNumber(out, f.auc, 3, valid);
-  out += ", \"precision20\": ";
-  appendNumber(out, f.precision20, 3, valid);
-  out += ", \"overlap_spread\": ";
-  appendNumber(out, f.overlapSpread(), 3, valid);
-  out += ", \"overlap_runs\": [";
-  for (size_t k = 0; valid && k < f.runOverlap.size(); ++k) {
-    if (k > 0) out += ", ";
-    appendNumber(out, f.runOverlap[k], 3);
-  }
-  out += "], \"success\": [";
-  for (int t = 0; valid && t < kSuccessSteps; ++t) {
-    if (t > 0) out += ", ";
-    appendNumber(out, f.success[t], 4);
-  }
-  out += "], \"precision\": [";
-  for (int t = 0; valid && t < kPrecisionSteps; ++t) {
-    if (t > 0) out += ", ";
-    appendNumber(out, f.precision[t], 4);
-  }
-  out += "]";
+void addFigures(Json& o, const Figures& f, bool valid) {
+  o["frames"] = f.frames;
+  o["overlap"] = fixed(f.overlap, 3, valid);
+  o["hit"] = fixed(f.hit, 3, valid);
+  o["pascal"] = fixed(f.pascal, 3, valid);
+  o["center_px"] = fixed(f.centerPx, 3, valid);
+  o["center_mm"] = fixed(f.centerMm, 1, valid);
+  o["center_z_mm"] = fixed(f.centerZMm, 1, valid);
+  o["ms_median"] = fixed(f.msMedian, 4, valid);
+  o["ms_mean"] = fixed(f.msMean, 4, valid);
+  o["allocs"] = fixed(f.allocs, 1, valid);
+  o["auc"] = fixed(f.auc, 3, valid);
+  o["precision20"] = fixed(f.precision20, 3, valid);
+  o["overlap_spread"] = fixed(f.overlapSpread(), 3, valid);
+  o["overlap_runs"] = fixedArray(f.runOverlap.data(), f.runOverlap.size(), 3, valid);
+  o["success"] = fixedArray(f.success, kSuccessSteps, 4, valid);
+  o["precision"] = fixedArray(f.precision, kPrecisionSteps, 4, valid);
 }
 
-void appendEntry(std::string& out, const EntryResult& e, const char* indent) {
-  out += indent;
-  out += "{\"tracker\": ";
-  appendString(out, e.tracker);
-  out += ", \"config\": ";
-  appendString(out, e.config);
-  out += ", \"runs\": ";
-  appendNumber(out, e.runs, 0);
-  out += ",\n";
-  out += indent;
-  out += " \"sequences\": [";
-  for (size_t i = 0; i < e.sequences.size(); ++i) {
-    const SequenceResult& s = e.sequences[i];
-    out += i == 0 ? "\n" : ",\n";
-    out += indent;
-    out += "   {\"name\": ";
-    appendString(out, s.name);
-    out += ", ";
+Json entryJson(const EntryResult& e) {
+  Json o;
+  o["tracker"] = e.tracker;
+  o["config"] = e.config;
+  o["runs"] = e.runs;
+  Json seqs = Json::array();
+  for (const SequenceResult& s : e.sequences) {
+    Json j;
+    j["name"] = s.name;
     Figures f = s.figures;
     if (!s.ran) f.frames = 0;
-    appendFigures(out, f, s.ran);
-    out += ", \"skipped_frames\": ";
-    appendNumber(out, s.skippedFrames, 0);
-    out += "}";
+    addFigures(j, f, s.ran);
+    j["skipped_frames"] = s.skippedFrames;
+    seqs.push_back(std::move(j));
   }
-  out += "],\n";
-  out += indent;
-  out += " \"average\": {";
-  appendFigures(out, e.average(), e.sequencesRan() > 0);
-  out += "}}";
+  o["sequences"] = std::move(seqs);
+  Json avg;
+  addFigures(avg, e.average(), e.sequencesRan() > 0);
+  o["average"] = std::move(avg);
+  return o;
 }
 
 }  // namespace
 
 std::string toJson(const std::vector<EntryResult>& entries) {
-  std::string out;
+  Json doc;
   if (entries.size() == 1) {
-    appendEntry(out, entries.front(), "");
+    doc = entryJson(entries.front());
   } else {
-    out += "[";
-    for (size_t i = 0; i < entries.size(); ++i) {
-      out += i == 0 ? "\n" : ",\n";
-      appendEntry(out, entries[i], "  ");
-    }
-    out += "\n]";
+    doc = Json::array();
+    for (const EntryResult& e : entries) doc.push_back(entryJson(e));
   }
-  out += "\n";
-  return out;
+  // A name that is not UTF-8 (a file name in another encoding) is written with U+FFFD
+  // in place of the bad bytes instead of failing the output.
+  return doc.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 bool writeJson(const char* path, const std::vector<EntryResult>& entries, std::string* err) {

@@ -7,7 +7,8 @@
 //                "center_z_mm", "ms_median", "ms_mean", "allocs"}}
 // One entry: that object; several: an array of them. Percentages are 0-100.
 // A figure that does not exist (tracker could not run, no centre distance, no 3D truth or
-// no 3D position) is null.
+// no 3D position) is null. Written through nlohmann-json, indented two spaces; figures
+// are rounded to the decimals the schema's page gives.
 #pragma once
 
 #include <cstdio>

@@ -1,13 +1,10 @@
 #include "Options.hpp"
 
-#include <cerrno>
-#include <cstdlib>
-#include <cstring>
-
 #include "Peers.hpp"
 #include "TrackerAdapters.hpp"
+#include "cuetrack/cli/Command.hpp"
+#include "cuetrack/cli/Values.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
-#include "cuetrack/platform/OptionOnce.hpp"
 
 namespace cuetrack::bench {
 namespace {
@@ -26,227 +23,202 @@ std::vector<std::string> splitComma(const std::string& s) {
   return out;
 }
 
-bool parseCount(const char* text, long min, long max, long* out) {
-  if (!text || !*text) return false;
-  errno = 0;
-  char* end = nullptr;
-  const long v = std::strtol(text, &end, 10);
-  if (errno != 0 || *end != '\0' || v < min || v > max) return false;
-  *out = v;
-  return true;
+// A whole number in [lo, hi], else the line `NAME: 'VALUE' IS_NOT`.
+cli::Convert whole(const char* name, long lo, long hi, const char* isNot, long* out) {
+  return [name, lo, hi, isNot, out](const std::string& v) {
+    if (!cli::wholeNumber(v, lo, hi, out).empty())
+      throw cli::BadCommandLine(std::string(name) + ": '" + cli::printable(v) + "' " + isNot);
+    return std::string();
+  };
+}
+
+const char* kAbout =
+    "usage: cuetrack-bench [options] SEQUENCE...\n"
+    "Runs trackers over recorded sequences with the protocol of Garcia et al. 2012:\n"
+    "initialise at the first ground-truth box, track, score overlap / hit / PASCAL /\n"
+    "centre distance, average over runs (seeds).";
+
+const char* kFooter =
+    "--tracker: cuetrack, opencv-kcf, opencv-csrt, opencv-mil, opencv-boosting,\n"
+    "  opencv-medianflow, opencv-mosse, opencv-tld, or opencv-all (default cuetrack).\n"
+    "--config: 1.1 ... 1.4, 2.1 ... 2.5, best (the default), or a preset with a\n"
+    "  beyond-the-paper switch off: best-nolost, best-fixedsize, best-nofastmotion,\n"
+    "  best-nocorrelation, best-noocclusion; or a paper preset with 2D negatives centred:\n"
+    "  1.1-centrednegatives; or best-filter (the correlation filter as the correlation\n"
+    "  cue, not the gray template).\n"
+    "SEQUENCE: a BoBoT video (NAME.avi, ground truth NAME.gt.txt beside it), an RGB-D\n"
+    "  folder, an OTB folder, a fakenect recording (groundtruth.txt beside INDEX.txt),\n"
+    "  or synth:<scene>. A missing or broken sequence is reported and skipped.\n"
+    "--gt, --from, --to and --reverse apply to the next SEQUENCE (list a file several\n"
+    "  times with different --from / --to / --reverse for OTB-style temporal robustness).\n"
+    "exit codes: 0 every sequence was sound and every output was written (a tracker\n"
+    "  that cannot run on a sequence is reported and listed, not a failure); 1 a\n"
+    "  sequence was missing or broken (unreadable, no ground truth, a first box outside\n"
+    "  the image, frames changing size) or an output (stdout, --json, --markdown, --csv,\n"
+    "  --plots, --results, --overlay, --video) failed: each is reported and the rest\n"
+    "  goes on; 2 bad command line";
+
+// What the declarations fill besides Options: the lists read in command-line order.
+struct Lists {
+  std::vector<std::string> sequences, trackers, configs, gts, froms, tos;
+  long runs = -1, peerRuns = -1, frames = -1, maxMem = -1, stride = -1, dropPct = -1;
+};
+
+void declare(cli::Command& cmd, Options* o, Lists* l) {
+  cmd.positionals("SEQUENCE", "a video, an RGB-D, OTB or fakenect folder, or synth:<scene>",
+                  &l->sequences);
+  cmd.list("--gt", "FILE", "ground truth for the next SEQUENCE", &l->gts);
+  cmd.list("--tracker", "T[,T]", "trackers (below; repeatable)", &l->trackers);
+  cmd.list("--config", "C[,C]", "cuetrack configurations (below; repeatable)", &l->configs);
+  const char* positive = "is not a positive whole number";
+  cmd.option("--runs", "N", "runs (seeds seed .. seed+N-1) per tracker (default 10)",
+             whole("--runs", 1, 1000000, positive, &l->runs));
+  cmd.option("--peer-runs", "N", "runs for the OpenCV peers (default: --runs)",
+             whole("--peer-runs", 1, 1000000, positive, &l->peerRuns));
+  cmd.option("--seed", "S", "first seed (default 1)", [o](const std::string& v) {
+    if (!cli::seed(v, &o->seed).empty())
+      throw cli::BadCommandLine("--seed: '" + cli::printable(v) + "' is not a whole number");
+    return std::string();
+  });
+  cmd.option("--frames", "N", "use only the first N frames of each sequence",
+             whole("--frames", 1, 1000000, positive, &l->frames));
+  cmd.option("--stride", "K", "a K times slower camera: track every K-th frame after the first box",
+             whole("--stride", 1, 1000, "is not a whole number from 1 to 1000", &l->stride));
+  cmd.option("--drop-frames", "PCT",
+             "a lossy link: drop PCT percent of the frames at random (the same ones for every "
+             "tracker and run, from --seed)",
+             whole("--drop-frames", 0, 95, "is not a whole percentage from 0 to 95", &l->dropPct));
+  cmd.list("--from", "F", "for the next SEQUENCE: only its frames with index F on", &l->froms);
+  cmd.list("--to", "T", "for the next SEQUENCE: only its frames with index up to T", &l->tos);
+  cmd.app()
+      .add_flag("--reverse",
+                "for the next SEQUENCE: play it backwards, from its last ground-truth box")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd.flag("--skip-bad-frames", "let readers skip unreadable frames (counted) instead of failing",
+           &o->skipBadFrames);
+  cmd.flag("--rgb-only", "drop the depth of every sequence (best then runs 2D; 2.x fail)",
+           &o->rgbOnly);
+  cmd.option("--max-mem", "MIB", "memory for one decoded sequence (default 4096)",
+             whole("--max-mem", 1, 1000000, positive, &l->maxMem));
+  cmd.text("--json", "FILE", "figures in the schema of docs/bench-json.md", &o->jsonPath);
+  cmd.text("--markdown", "FILE", "the tables as Markdown", &o->markdownPath);
+  cmd.option(
+      "--paper", "table1|table3", "put the paper's figures beside ours in the Markdown",
+      [o](const std::string& v) {
+        if (v == "table1") {
+          o->paper = PaperReference::Table1;
+        } else if (v == "table3") {
+          o->paper = PaperReference::Table3;
+        } else {
+          throw cli::BadCommandLine("--paper: '" + cli::printable(v) + "' is not table1 or table3");
+        }
+        return std::string();
+      });
+  cmd.text("--csv", "DIR", "per-frame overlaps, DIR/<sequence>.overlap.csv", &o->csvDir);
+  cmd.text("--plots", "DIR", "overlap-over-time plots, DIR/<sequence>.overlap.png", &o->plotDir);
+  cmd.text("--results", "DIR",
+           "BoBoT result files, DIR/<sequence>/<tracker>[-<config>].run<n>.txt (n = 1.. for "
+           "seeds seed..)",
+           &o->resultsDir);
+  cmd.text("--overlay", "DIR", "frames with the boxes of run 1 drawn, DIR/<sequence>/NNNNNN.jpg",
+           &o->overlayDir);
+  cmd.text("--video", "DIR",
+           "the same as one video per sequence, DIR/<sequence>.avi (Motion JPEG, 30 fps)",
+           &o->videoDir);
+  cmd.text("--peer-cache", "DIR", "keep and reuse the OpenCV peers' results (docs/bench-json.md)",
+           &o->peerCacheDir);
+  cmd.flag("--quiet", "no progress on stderr", &o->quiet);
 }
 
 }  // namespace
 
-const char* usage() {
-  return "usage: cuetrack-bench [options] SEQUENCE...\n"
-         "Runs trackers over recorded sequences with the protocol of Garcia et al. 2012:\n"
-         "initialise at the first ground-truth box, track, score overlap / hit / PASCAL /\n"
-         "centre distance, average over runs (seeds).\n"
-         "\n"
-         "SEQUENCE: a BoBoT video (NAME.avi, ground truth NAME.gt.txt beside it), an RGB-D\n"
-         "  folder, an OTB folder, a fakenect recording (groundtruth.txt beside INDEX.txt),\n"
-         "  or synth:<scene>. A missing or broken sequence is reported and skipped.\n"
-         "\n"
-         "  --gt FILE          ground truth for the next SEQUENCE\n"
-         "  --tracker T[,T]    cuetrack, opencv-kcf, opencv-csrt, opencv-mil, opencv-boosting,\n"
-         "                     opencv-medianflow, opencv-mosse, opencv-tld, or opencv-all\n"
-         "                     (repeatable; default cuetrack)\n"
-         "  --config C[,C]     cuetrack configuration: 1.1 ... 1.4, 2.1 ... 2.5, best, or a\n"
-         "                     preset with a beyond-the-paper switch off: best-nolost,\n"
-         "                     best-fixedsize, best-nofastmotion, best-nocorrelation,\n"
-         "                     best-noocclusion;\n"
-         "                     or a paper preset with 2D negatives centred:\n"
-         "                     1.1-centrednegatives; or best-filter (the correlation\n"
-         "                     filter as the correlation cue, not the gray template)\n"
-         "                     (repeatable; default best)\n"
-         "  --runs N           runs (seeds seed .. seed+N-1) per tracker (default 10)\n"
-         "  --peer-runs N      runs for the OpenCV peers (default: --runs)\n"
-         "  --seed S           first seed (default 1)\n"
-         "  --frames N         use only the first N frames of each sequence\n"
-         "  --stride K         a K times slower camera: track every K-th frame after the\n"
-         "                     first box (the others are neither tracked nor scored)\n"
-         "  --drop-frames PCT  a lossy link: drop PCT percent of the frames at random\n"
-         "                     (the same ones for every tracker and run, from --seed)\n"
-         "  --from F, --to T   for the next SEQUENCE: only its frames with index F .. T\n"
-         "                     (the track begins at the first ground-truth box from F on)\n"
-         "  --reverse          for the next SEQUENCE: play it backwards, from its last\n"
-         "                     ground-truth box (list a file several times with different\n"
-         "                     --from / --to / --reverse for OTB-style temporal robustness)\n"
-         "  --skip-bad-frames  let readers skip unreadable frames (counted) instead of failing\n"
-         "  --rgb-only         drop the depth of every sequence (best then runs 2D; 2.x fail)\n"
-         "  --max-mem MIB      memory for one decoded sequence (default 4096)\n"
-         "  --json FILE        figures in the schema of docs/bench-json.md\n"
-         "  --markdown FILE    the tables as Markdown\n"
-         "  --paper table1|table3  put the paper's figures beside ours in the Markdown\n"
-         "  --csv DIR          per-frame overlaps, DIR/<sequence>.overlap.csv\n"
-         "  --plots DIR        overlap-over-time plots, DIR/<sequence>.overlap.png\n"
-         "  --results DIR      BoBoT result files, DIR/<sequence>/<tracker>[-<config>].run<n>.txt\n"
-         "                     (n = 1.. for seeds seed..)\n"
-         "  --overlay DIR      frames with the boxes of run 1 drawn, DIR/<sequence>/NNNNNN.jpg\n"
-         "  --video DIR        the same as one video per sequence, DIR/<sequence>.avi (Motion\n"
-         "                     JPEG, 30 fps), with a legend of the trackers' colours\n"
-         "  --quiet            no progress on stderr\n"
-         "exit codes: 0 every sequence was sound and every output was written (a tracker\n"
-         "  that cannot run on a sequence is reported and listed, not a failure); 1 a\n"
-         "  sequence was missing or broken (unreadable, no ground truth, a first box outside\n"
-         "  the image, frames changing size) or an output (stdout, --json, --markdown, --csv,\n"
-         "  --plots, --results, --overlay, --video) failed: each is reported and the rest\n"
-         "  goes on; 2 bad command line\n";
+std::string usage() {
+  cli::Command cmd("cuetrack-bench", kAbout, kFooter);
+  Options o;
+  Lists l;
+  declare(cmd, &o, &l);
+  return cmd.help();
 }
 
 bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std::string* err) {
   *help = false;
+  cli::Command cmd("cuetrack-bench", kAbout, kFooter);
+  Lists l;
+  declare(cmd, o, &l);
+  switch (cmd.check(argc, argv, err)) {
+    case cli::Command::Parsed::Help:
+      *help = true;
+      return true;
+    case cli::Command::Parsed::Error: {
+      const std::string pointer = " (see --help)";  // main adds it
+      if (err->size() > pointer.size() &&
+          err->compare(err->size() - pointer.size(), pointer.size(), pointer) == 0)
+        err->resize(err->size() - pointer.size());
+      return false;
+    }
+    case cli::Command::Parsed::Run:
+      break;
+  }
+  if (l.runs > 0) o->runs = static_cast<int>(l.runs);
+  if (l.peerRuns > 0) o->peerRuns = static_cast<int>(l.peerRuns);
+  if (l.frames > 0) o->maxFrames = static_cast<int>(l.frames);
+  if (l.maxMem > 0) o->maxMemMiB = static_cast<size_t>(l.maxMem);
+  if (l.stride > 0) o->stride = static_cast<int>(l.stride);
+  if (l.dropPct >= 0) o->dropPct = static_cast<int>(l.dropPct);
+
   std::vector<std::string> trackers, configs;
-  SequenceArg pending;  // --gt, --from, --to, --reverse wait for their SEQUENCE
-  // The run-wide settings come once; --tracker and --config add to their lists, and the
-  // per-sequence ones (--gt, --from, ...) apply to the next SEQUENCE each time.
-  static const char* const kOnce[] = {"--runs",
-                                      "--peer-runs",
-                                      "--frames",
-                                      "--max-mem",
-                                      "--seed",
-                                      "--json",
-                                      "--markdown",
-                                      "--csv",
-                                      "--plots",
-                                      "--results",
-                                      "--overlay",
-                                      "--paper",
-                                      "--skip-bad-frames",
-                                      "--rgb-only",
-                                      "--quiet"};
-  platform::OptionOnce once;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    for (const char* name : kOnce) {
-      char twice[64];
-      if (a == name && !once.first(argv[i], twice, sizeof twice)) {
-        *err = twice;
+  for (const std::string& v : l.trackers) {
+    for (const std::string& t : splitComma(v)) {
+      if (t.empty()) {
+        *err = "--tracker '" + v + "': an empty tracker name";
+        return false;
+      }
+      if (t == "opencv-all") {
+        for (int p = 0; p < kNumPeers; ++p) trackers.push_back(peerName(p));
+      } else if (t == "cuetrack" || isPeerName(t)) {
+        trackers.push_back(t);
+      } else {
+        *err = "--tracker: unknown tracker '" + t + "'";
         return false;
       }
     }
-    auto value = [&](const char** v) {
-      if (i + 1 >= argc) {
-        *err = a + " needs a value";
+  }
+  for (const std::string& v : l.configs) {
+    for (const std::string& c : splitComma(v)) {
+      if (c.empty()) {
+        *err = "--config '" + v + "': an empty configuration name";
         return false;
       }
-      *v = argv[++i];
-      return true;
-    };
-    const char* v = nullptr;
-    long n = 0;
-    if (a == "-h" || a == "--help") {
-      *help = true;
-      return true;
-    } else if (a == "--gt") {
-      if (!value(&v)) return false;
-      pending.gtPath = v;
-    } else if (a == "--tracker") {
-      if (!value(&v)) return false;
-      for (const std::string& t : splitComma(v)) {
-        if (t.empty()) {
-          *err = std::string("--tracker '") + v + "': an empty tracker name";
-          return false;
-        }
-        if (t == "opencv-all") {
-          for (int p = 0; p < kNumPeers; ++p) trackers.push_back(peerName(p));
-        } else if (t == "cuetrack" || isPeerName(t)) {
-          trackers.push_back(t);
-        } else {
-          *err = "--tracker: unknown tracker '" + t + "'";
-          return false;
-        }
-      }
-    } else if (a == "--config") {
-      if (!value(&v)) return false;
-      for (const std::string& c : splitComma(v)) {
-        if (c.empty()) {
-          *err = std::string("--config '") + v + "': an empty configuration name";
-          return false;
-        }
-        if (!isCuetrackConfig(c)) {
-          *err = "--config: unknown configuration '" + c +
-                 "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
-                 "best-nofastmotion, best-nocorrelation, 1.1-centrednegatives; best-filter)";
-          return false;
-        }
-        configs.push_back(c);
-      }
-    } else if (a == "--runs" || a == "--peer-runs" || a == "--frames" || a == "--max-mem") {
-      if (!value(&v)) return false;
-      if (!parseCount(v, 1, 1000000, &n)) {
-        *err = a + ": '" + v + "' is not a positive whole number";
+      if (!isCuetrackConfig(c)) {
+        *err = "--config: unknown configuration '" + c +
+               "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
+               "best-nofastmotion, best-nocorrelation, 1.1-centrednegatives; best-filter)";
         return false;
       }
-      if (a == "--runs") o->runs = static_cast<int>(n);
-      if (a == "--peer-runs") o->peerRuns = static_cast<int>(n);
-      if (a == "--frames") o->maxFrames = static_cast<int>(n);
-      if (a == "--max-mem") o->maxMemMiB = static_cast<size_t>(n);
-    } else if (a == "--stride" || a == "--drop-frames") {
-      if (!value(&v)) return false;
-      const bool stride = a == "--stride";
-      if (!parseCount(v, stride ? 1 : 0, stride ? 1000 : 95, &n)) {
-        *err = a + ": '" + v +
-               (stride ? "' is not a whole number from 1 to 1000"
-                       : "' is not a whole percentage from 0 to 95");
+      configs.push_back(c);
+    }
+  }
+
+  // --gt, --from, --to and --reverse wait for their SEQUENCE: the command line's order.
+  SequenceArg pending;
+  size_t next[5] = {0, 0, 0, 0, 0};  // gt, from, to, sequence, (reverse)
+  for (const CLI::Option* opt : cmd.app().parse_order()) {
+    const std::string name = opt->get_name();
+    if (name == "--gt") {
+      pending.gtPath = l.gts[next[0]++];
+    } else if (name == "--from" || name == "--to") {
+      const bool from = name == "--from";
+      const std::string& v = from ? l.froms[next[1]++] : l.tos[next[2]++];
+      long n = 0;
+      if (!cli::wholeNumber(v, 0, 100000000, &n).empty()) {
+        *err = name + ": '" + v + "' is not a frame index (a whole number from 0)";
         return false;
       }
-      if (stride)
-        o->stride = static_cast<int>(n);
-      else
-        o->dropPct = static_cast<int>(n);
-    } else if (a == "--from" || a == "--to") {
-      if (!value(&v)) return false;
-      if (!parseCount(v, 0, 100000000, &n)) {
-        *err = a + ": '" + v + "' is not a frame index (a whole number from 0)";
-        return false;
-      }
-      (a == "--from" ? pending.fromIndex : pending.toIndex) = static_cast<int>(n);
-    } else if (a == "--seed") {
-      if (!value(&v)) return false;
-      errno = 0;
-      char* end = nullptr;
-      const unsigned long long s = std::strtoull(v, &end, 10);
-      if (errno != 0 || *end != '\0' || *v == '-' || *v == '\0') {
-        *err = std::string("--seed: '") + v + "' is not a whole number";
-        return false;
-      }
-      o->seed = s;
-    } else if (a == "--json" || a == "--markdown" || a == "--csv" || a == "--plots" ||
-               a == "--results" || a == "--overlay" || a == "--peer-cache" || a == "--video") {
-      if (!value(&v)) return false;
-      std::string& dst = a == "--json"         ? o->jsonPath
-                         : a == "--markdown"   ? o->markdownPath
-                         : a == "--csv"        ? o->csvDir
-                         : a == "--plots"      ? o->plotDir
-                         : a == "--overlay"    ? o->overlayDir
-                         : a == "--peer-cache" ? o->peerCacheDir
-                         : a == "--video"      ? o->videoDir
-                                               : o->resultsDir;
-      dst = v;
-    } else if (a == "--paper") {
-      if (!value(&v)) return false;
-      if (std::strcmp(v, "table1") == 0) {
-        o->paper = PaperReference::Table1;
-      } else if (std::strcmp(v, "table3") == 0) {
-        o->paper = PaperReference::Table3;
-      } else {
-        *err = std::string("--paper: '") + v + "' is not table1 or table3";
-        return false;
-      }
-    } else if (a == "--skip-bad-frames") {
-      o->skipBadFrames = true;
-    } else if (a == "--reverse") {
+      (from ? pending.fromIndex : pending.toIndex) = static_cast<int>(n);
+    } else if (name == "--reverse") {
       pending.reverse = true;
-    } else if (a == "--rgb-only") {
-      o->rgbOnly = true;
-    } else if (a == "--quiet") {
-      o->quiet = true;
-    } else if (a.size() > 1 && a[0] == '-') {
-      *err = "unknown option '" + a + "'";
-      return false;
-    } else {
+    } else if (opt->get_positional()) {
+      const std::string& a = l.sequences[next[3]++];
       if (pending.fromIndex >= 0 && pending.toIndex >= 0 && pending.toIndex < pending.fromIndex) {
         *err = "--to " + std::to_string(pending.toIndex) + " lies before --from " +
                std::to_string(pending.fromIndex) + " (for " + a + ")";

@@ -1,4 +1,4 @@
-// Command line of cuetrack-bench (see usage()).
+// Command line of cuetrack-bench (see usage()), through the tools' one command-line layer.
 #pragma once
 
 #include <cstdint>
@@ -37,7 +37,8 @@ struct Options {
   PaperReference paper = PaperReference::None;
 };
 
-const char* usage();
+// --help, generated from the declarations (apps/common's command-line layer).
+std::string usage();
 // False with one line in *err for a bad command line; *help when -h/--help was given.
 bool parseOptions(int argc, const char* const* argv, Options* out, bool* help, std::string* err);
 

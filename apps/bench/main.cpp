@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (help) {
-    std::fputs(usage(), stdout);
+    std::fputs(usage().c_str(), stdout);
     return cuetrack::platform::stdoutWritten("cuetrack-bench") ? 0 : 1;
   }
 

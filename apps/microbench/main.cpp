@@ -6,11 +6,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
+#include "cuetrack/cli/Command.hpp"
+#include "cuetrack/cli/Values.hpp"
 #include "cuetrack/core/Config.hpp"
 #include "cuetrack/core/Integral.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 
+namespace cli = cuetrack::cli;
 namespace ig = cuetrack::integral;
 using cuetrack::Rgb8;
 
@@ -85,27 +89,17 @@ const char* kernelName(char k) {
   return k == 'r' ? "rgb (gray+alpha2+beta)" : k == 'd' ? "depth (sum+count)" : "gray8";
 }
 
-void usage() {
-  std::fprintf(
-      stderr,
-      "usage: cuetrack-microbench [--runs N] [--size WxH] [--isa NAME] [--kernel rgb|depth|gray]\n"
-      "       cuetrack-microbench --icount FRAMES --isa NAME --kernel rgb|depth|gray\n"
-      "  Timed mode prints the median and minimum time per frame of each kernel and ISA.\n"
-      "  --icount runs one kernel FRAMES times without reading any clock: run it under\n"
-      "  qemu with the icount plugin at FRAMES=N and 0; (difference)/N = instructions per frame.\n"
-      "  exit codes: 0 done; 1 a SIMD kernel's result differs from the scalar reference;\n"
-      "  2 bad command line\n"
-      "  ISAs in this build:");
-  for (const Isa& isa : kIsas) std::fprintf(stderr, " %s", isa.name);
-  std::fprintf(stderr, " (active: %s)\n", ig::activeIsa());
-}
-
-bool parseInt(const char* s, int lo, int hi, int* out) {
-  char* end = nullptr;
-  const long v = std::strtol(s, &end, 10);
-  if (end == s || *end != '\0' || v < lo || v > hi) return false;
-  *out = static_cast<int>(v);
-  return true;
+std::string exitCodes() {
+  std::string t =
+      "Timed mode prints the median and minimum time per frame of each kernel and ISA.\n"
+      "--icount runs one kernel FRAMES times without reading any clock: run it under qemu\n"
+      "with the icount plugin at FRAMES=N and 0; (difference)/N = instructions per frame.\n"
+      "ISAs in this build:";
+  for (const Isa& isa : kIsas) t += std::string(" ") + isa.name;
+  t += std::string(" (active: ") + ig::activeIsa() + ")\n";
+  t += "exit codes: 0 done; 1 a SIMD kernel's result differs from the scalar reference;\n"
+       "  2 bad command line (an option given twice too)";
+  return t;
 }
 
 }  // namespace
@@ -113,56 +107,39 @@ bool parseInt(const char* s, int lo, int hi, int* out) {
 int main(int argc, char** argv) {
   int runs = 200, width = cuetrack::kMaxImageWidth, height = cuetrack::kMaxImageHeight;
   int icountFrames = -1;
-  const char* isaName = nullptr;
+  std::string isaName;
   char kernel = 0;  // 0 = all
-  // Every option takes a value: step over both.
-  for (int i = 1; i < argc; i += 2) {
-    const char* a = argv[i];
-    const char* v = i + 1 < argc ? argv[i + 1] : nullptr;
-    bool ok = v != nullptr;
-    if (!std::strcmp(a, "--runs") && ok) {
-      ok = parseInt(v, 1, kMaxRuns, &runs);
-    } else if (!std::strcmp(a, "--icount") && ok) {
-      ok = parseInt(v, 0, 1000000, &icountFrames);
-    } else if (!std::strcmp(a, "--isa") && ok) {
-      isaName = v;
-    } else if (!std::strcmp(a, "--kernel") && ok) {
-      ok = !std::strcmp(v, "rgb") || !std::strcmp(v, "depth") || !std::strcmp(v, "gray");
-      kernel = v[0];
-    } else if (!std::strcmp(a, "--size") && ok) {
-      ok = std::sscanf(v, "%dx%d", &width, &height) == 2 && width >= 1 && height >= 1 &&
-           width <= cuetrack::kMaxImageWidth && height <= cuetrack::kMaxImageHeight;
-    } else {
-      usage();
-      return !std::strcmp(a, "--help") ? 0 : 2;
-    }
-    if (!ok) {
-      std::fprintf(stderr, "cuetrack-microbench: bad value '%s' for %s (max size %dx%d)\n",
-                   v ? v : "", a, cuetrack::kMaxImageWidth, cuetrack::kMaxImageHeight);
-      return 2;
-    }
-  }
+  cli::Command cmd("cuetrack-microbench", "Times the integral-image kernels on one frame.",
+                   exitCodes(), cli::Quotes::Value);
+  cmd.number("--runs", "N", "timed runs per kernel and ISA, 1..10000 (default 200)", 1, kMaxRuns,
+             &runs);
+  cmd.option("--size", "WxH", "frame size (default and at most 640x480)",
+             [&](const std::string& v) {
+               return cli::imageSize(v, 1, cuetrack::kMaxImageWidth, cuetrack::kMaxImageHeight,
+                                     &width, &height);
+             });
+  cmd.text("--isa", "NAME", "this ISA only (beside the scalar reference)", &isaName);
+  cmd.option("--kernel", "rgb|depth|gray", "this kernel only", [&](const std::string& v) {
+    int k = 0;
+    const std::string why = cli::oneOf(v, "rgb|depth|gray", &k);
+    kernel = "rdg"[k];
+    return why;
+  });
+  cmd.number("--icount", "FRAMES", "run --kernel on --isa FRAMES times, 0..1000000, no clock", 0,
+             1000000, &icountFrames);
+  if (const int rc = cmd.parse(argc, argv); rc >= 0) return rc;
   const Isa* only = nullptr;
-  if (isaName) {
+  if (!isaName.empty()) {
     for (const Isa& isa : kIsas)
-      if (!std::strcmp(isa.name, isaName)) only = &isa;
-    if (!only) {
-      std::fprintf(stderr, "cuetrack-microbench: ISA '%s' is not in this build\n", isaName);
-      usage();
-      return 2;
-    }
-    if (!std::strcmp(isaName, "avx2") && !ig::avx2Available()) {
-      std::fprintf(stderr, "cuetrack-microbench: this CPU has no AVX2\n");
-      return 2;
-    }
+      if (isaName == isa.name) only = &isa;
+    if (!only) return cmd.fail("--isa '" + isaName + "': not in this build (see --help)");
+    if (isaName == "avx2" && !ig::avx2Available())
+      return cmd.fail("--isa avx2: this CPU has no AVX2");
   }
   fillFrame(width, height);
 
   if (icountFrames >= 0) {
-    if (!only || !kernel) {
-      std::fprintf(stderr, "cuetrack-microbench: --icount needs --isa and --kernel\n");
-      return 2;
-    }
+    if (!only || !kernel) return cmd.fail("--icount needs --isa and --kernel");
     uint32_t check = 0;
     for (int f = 0; f < icountFrames; ++f) check ^= runKernel(*only, kernel, width, height);
     std::printf("icount %s %s %dx%d frames=%d checksum=%08x\n", only->name, kernelName(kernel),

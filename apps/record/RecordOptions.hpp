@@ -1,8 +1,8 @@
-// Command line of cuetrack-record, parsed into plain values (no allocation, testable).
+// Command line of cuetrack-record, parsed into plain values (testable), through the
+// tools' one command-line layer (apps/common).
 #pragma once
 
-#include <cstddef>
-#include <cstdio>
+#include <string>
 
 #include "cuetrack/drivers/KinectSource.hpp"
 
@@ -17,18 +17,18 @@ inline constexpr int kExitOutput = 3;  // cannot write the recording
 enum class Format { Fakenect, Rgbd };
 
 struct Options {
-  const char* outDir = nullptr;
+  std::string outDir;
   Format format = Format::Fakenect;
   int maxFrames = 0;        // 0 = no limit
   double maxSeconds = 0.0;  // [s] of camera time; 0 = no limit
   bool list = false;
   bool quiet = false;
+  std::string serial;  // --serial; kinect.serial points into it
   KinectOptions kinect{};
 };
 
-enum class ParseResult { Ok, Help, Error };
-
-ParseResult parse(int argc, char** argv, Options* out, char* err, std::size_t errLen);
-void usage(std::FILE* to);
+// Parses argv into *out. Returns -1 to record, else what main returns: kExitOk after
+// --help (kExitOutput when stdout failed), kExitUsage after one line on stderr.
+int parse(int argc, const char* const* argv, Options* out);
 
 }  // namespace cuetrack::record

@@ -1,6 +1,6 @@
 // cuetrack-record: Kinect -> fakenect recording (INDEX.txt, r-*.ppm, d-*.pgm) or RGB-D
 // folder (host builds with OpenCV), with a frame-count or duration limit and a progress
-// line. Exit codes are in usage().
+// line. Exit codes are in --help (RecordOptions.cpp).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -94,7 +94,7 @@ void progress(const record::Options& opt, int frames, double seconds, bool final
   const double wallS = static_cast<double>(gClock.nowUs() - gStartUs) / 1e6;
   std::fprintf(stderr,
                "\rrecording %s: %d%s frames, %.1f s, %.1f fps, dropped %llu, unpaired %llu%s",
-               opt.outDir, frames, limit, seconds, wallS > 0.0 ? frames / wallS : 0.0,
+               opt.outDir.c_str(), frames, limit, seconds, wallS > 0.0 ? frames / wallS : 0.0,
                static_cast<unsigned long long>(s.dropped),
                static_cast<unsigned long long>(s.unpaired), final ? "\n" : "   ");
 }
@@ -103,16 +103,7 @@ void progress(const record::Options& opt, int frames, double seconds, bool final
 
 int main(int argc, char** argv) {
   record::Options opt;
-  char err[256];
-  const record::ParseResult parsed = record::parse(argc, argv, &opt, err, sizeof err);
-  if (parsed == record::ParseResult::Help) {
-    record::usage(stdout);
-    return platform::stdoutWritten("cuetrack-record") ? record::kExitOk : record::kExitOutput;
-  }
-  if (parsed == record::ParseResult::Error) {
-    std::fprintf(stderr, "cuetrack-record: %s (see --help)\n", err);
-    return record::kExitUsage;
-  }
+  if (const int rc = record::parse(argc, argv, &opt); rc >= 0) return rc;
   if (opt.list) return listDevices();
 
 #if !defined(CUETRACK_RECORD_HAVE_RGBD)
@@ -133,7 +124,7 @@ int main(int argc, char** argv) {
                  gKinect.streams() == KinectStreams::Both
                      ? " (Pi-class boards carry ~15-20 MB/s: see docs/kinect.md if frames drop)"
                      : "");
-  if (!gWriter.open(opt.format, opt.outDir)) {
+  if (!gWriter.open(opt.format, opt.outDir.c_str())) {
     std::fprintf(stderr, "cuetrack-record: %s\n", gWriter.error());
     gKinect.close();
     return record::kExitOutput;

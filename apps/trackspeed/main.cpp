@@ -13,10 +13,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <new>
+#include <string>
 
+#include "cuetrack/cli/Command.hpp"
 #include "cuetrack/core/Tracker.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
-#include "cuetrack/platform/OptionOnce.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
 
 using namespace cuetrack;
@@ -48,90 +49,43 @@ double median(uint32_t* v, int n) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-const char* kUsage =
-    "usage: cuetrack-trackspeed [--preset NAME] [--scene NAME] [--frames N] [--particles N]\n"
-    "                           [--weak M] [--icount] [--hash]\n"
-    "The tracker's median update time (and its stages) on a synthetic scene.\n"
-    "  --preset NAME   1.1-1.4, 2.1-2.5, best (default 2.1)\n"
-    "  --scene NAME    synthetic scene (default moving; cuetrack-synth --list)\n"
-    "  --frames N      updates to time, 0..1999 (default 150; 0 times only the set-up,\n"
-    "                  qemu-icount's baseline: the one tool where 0 is a count)\n"
-    "  --particles N   particles, 1..2000 (default: the preset's)\n"
-    "  --weak M        weak classifiers, 1..32 (default: the preset's)\n"
-    "  --icount        read no clock (for qemu-icount: count(N) - count(0), / N)\n"
-    "  --hash          print an FNV-1a hash of every frame's box, confidence and state\n"
+const char* kExitCodes =
     "exit codes: 0 done, 1 a frame of the scene could not be rendered, the tracker\n"
     "  refused its first box, or stdout could not be written, 2 bad command line (an\n"
-    "  unknown --scene, an option given twice too)\n";
+    "  unknown --scene, an option given twice too)";
 
 constexpr int kExitRun = 1;
-constexpr int kExitUsage = 2;
-
-// The whole of text as a decimal integer in [lo, hi], else an error line and false.
-bool parseCount(const char* option, const char* text, long lo, long hi, int* out) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || errno != 0 || v < lo || v > hi) {
-    std::fprintf(stderr, "cuetrack-trackspeed: %s '%s': expected a whole number in %ld..%ld\n",
-                 option, text, lo, hi);
-    return false;
-  }
-  *out = static_cast<int>(v);
-  return true;
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* presetName = "2.1";
-  const char* scene = "moving";
+  std::string presetName = "2.1";
+  std::string scene = "moving";
   int frames = 150, particles = -1, weak = -1;
   bool icount = false, hash = false;
-  platform::OptionOnce once;
-  for (int i = 1; i < argc; ++i) {
-    const char* a = argv[i];
-    const bool more = i + 1 < argc;
-    char twice[96];
-    if (a[0] == '-' && !once.first(a, twice, sizeof twice)) {
-      std::fprintf(stderr, "cuetrack-trackspeed: %s\n", twice);
-      return kExitUsage;
-    }
-    if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
-      std::fputs(kUsage, stdout);
-      return platform::stdoutWritten("cuetrack-trackspeed") ? 0 : kExitRun;
-    } else if (!std::strcmp(a, "--preset") && more) {
-      presetName = argv[++i];
-    } else if (!std::strcmp(a, "--scene") && more) {
-      scene = argv[++i];
-    } else if (!std::strcmp(a, "--frames") && more) {
-      if (!parseCount(a, argv[++i], 0, kMaxFrames - 1, &frames)) return kExitUsage;
-    } else if (!std::strcmp(a, "--particles") && more) {
-      if (!parseCount(a, argv[++i], 1, kMaxParticles, &particles)) return kExitUsage;
-    } else if (!std::strcmp(a, "--weak") && more) {
-      if (!parseCount(a, argv[++i], 1, kMaxWeakClassifiers, &weak)) return kExitUsage;
-    } else if (!std::strcmp(a, "--icount")) {
-      icount = true;
-    } else if (!std::strcmp(a, "--hash")) {
-      hash = true;
-    } else {
-      std::fprintf(stderr,
-                   "cuetrack-trackspeed: unknown option or missing value: '%s' (see --help)\n", a);
-      return kExitUsage;
-    }
-  }
   Preset preset;
-  if (!parsePreset(presetName, &preset)) {
-    std::fprintf(stderr, "cuetrack-trackspeed: --preset '%s': unknown (1.1-1.4, 2.1-2.5, best)\n",
-                 presetName);
-    return kExitUsage;
-  }
   SceneSpec spec;
-  if (!makeScene(scene, &spec)) {
-    std::fprintf(stderr, "cuetrack-trackspeed: --scene '%s': unknown (cuetrack-synth --list)\n",
-                 scene);
-    return kExitUsage;
-  }
+  cli::Command cmd("cuetrack-trackspeed",
+                   "The tracker's median update time (and its stages) on a synthetic scene.",
+                   kExitCodes);
+  cmd.option("--preset", "NAME", "1.1-1.4, 2.1-2.5, best (default 2.1)", [&](const std::string& v) {
+    presetName = v;
+    return parsePreset(v.c_str(), &preset) ? "" : "unknown (1.1-1.4, 2.1-2.5, best)";
+  });
+  cmd.text("--scene", "NAME", "synthetic scene (default moving; cuetrack-synth --list)", &scene);
+  cmd.number("--frames", "N",
+             "updates to time, 0..1999 (default 150; 0: the set-up, icount's baseline)", 0,
+             kMaxFrames - 1, &frames);
+  cmd.number("--particles", "N", "particles, 1..2000 (default: the preset's)", 1, kMaxParticles,
+             &particles);
+  cmd.number("--weak", "M", "weak classifiers, 1..32 (default: the preset's)", 1,
+             kMaxWeakClassifiers, &weak);
+  cmd.flag("--icount", "read no clock (for qemu-icount: count(N) - count(0), / N)", &icount);
+  cmd.flag("--hash", "print an FNV-1a hash of every frame's box, confidence and state", &hash);
+  if (const int rc = cmd.parse(argc, argv); rc >= 0) return rc;
+  parsePreset(presetName.c_str(), &preset);  // checked as it was read
+  if (!makeScene(scene.c_str(), &spec))
+    return cmd.fail(cmd.badValue("--scene", scene, "unknown (cuetrack-synth --list)"));
   spec.frameCount = kRendered;
   SyntheticSource* src = new (sourceStorage) SyntheticSource(spec, 1);
   TrackerConfig cfg = presetConfig(preset);
@@ -147,8 +101,8 @@ int main(int argc, char** argv) {
   }
   const InitError e = tracker.init(slots[0].frame(), slots[0].groundTruth);
   if (e != InitError::None) {
-    std::fprintf(stderr, "cuetrack-trackspeed: %s: the tracker refused the first box: %s\n", scene,
-                 toString(e));
+    std::fprintf(stderr, "cuetrack-trackspeed: %s: the tracker refused the first box: %s\n",
+                 scene.c_str(), toString(e));
     return kExitRun;
   }
   int n = 0, learned = 0;
@@ -186,8 +140,8 @@ int main(int argc, char** argv) {
       "preset %s scene %s %dx%d frames %d particles %d weak %d learned %d\n"
       "median update %.0f us (features %.0f, predict %.0f, weigh %.0f, learn %.0f); "
       "tracker sizeof %zu B\n",
-      presetName, scene, spec.width, spec.height, n, cfg.numParticles, cfg.numWeakClassifiers,
-      learned, median(totalUs, n), median(featuresUs, n), median(predictUs, n), median(weighUs, n),
-      median(learnUs, n), sizeof(Tracker));
+      presetName.c_str(), scene.c_str(), spec.width, spec.height, n, cfg.numParticles,
+      cfg.numWeakClassifiers, learned, median(totalUs, n), median(featuresUs, n),
+      median(predictUs, n), median(weighUs, n), median(learnUs, n), sizeof(Tracker));
   return platform::stdoutWritten("cuetrack-trackspeed") ? 0 : kExitRun;
 }

@@ -256,3 +256,25 @@ TEST_CASE(
   CHECK(parse({"--video"}, &o, &err) == ParseResult::Error);
   CHECK(err == "--video needs a value (see --help)");
 }
+
+TEST_CASE("--opt=value is the same as --opt value (issue 42: --box=1,2,3,4 was refused)") {
+  AppOptions o;
+  std::string err;
+  REQUIRE(parse({"--box=1,2,3,4", "--frames=7", "--source=synth:moving"}, &o, &err) ==
+          ParseResult::Run);
+  CHECK(o.hasBox);
+  CHECK(o.box.x == 1.f);
+  CHECK(o.box.h == 4.f);
+  CHECK(o.frames == 7);
+  CHECK(std::string(o.source) == "synth:moving");
+  REQUIRE(parse({"--box", "1,2,3,4"}, &o, &err) == ParseResult::Run);
+  CHECK(o.box.w == 3.f);
+  CHECK(parse({"--box=1,2,3,4", "--box", "1,2,3,4"}, &o, &err) == ParseResult::Error);
+  CHECK(err == "--box given twice");
+  CHECK(parse({"--box=1,2,0,4"}, &o, &err) == ParseResult::Error);
+  CHECK(err.find("--box 1,2,0,4: expected X,Y,W,H") == 0);
+  // The --mavlink-* option named without --protocol mavlink is the first one given.
+  CHECK(parse({"--serial", "x", "--mavlink-landing", "angles", "--mavlink-sysid", "3"}, &o, &err) ==
+        ParseResult::Error);
+  CHECK(err == "--mavlink-landing needs --protocol mavlink");
+}

@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
-#include "MiniJson.hpp"
 #include "SharedData.hpp"
 #include "Skip.hpp"
 
@@ -102,20 +102,19 @@ TEST_CASE("a missing sequence is reported, the next one runs, the exit code says
   CHECK(r.exitCode == 1);
   CHECK(r.out.find("/nonexistent/Vid_X.avi") != std::string::npos);
   CHECK(r.out.find("(skipped)") != std::string::npos);
-  minijson::Value v;
-  REQUIRE(minijson::parse(readAll(json), &v));
-  REQUIRE(v.kind == minijson::Value::Array);
-  REQUIRE(v.items.size() == 2);
-  const minijson::Value& cue = v.items[0];
-  CHECK(cue.get("tracker")->s == "cuetrack");
-  const auto& seqs = cue.get("sequences")->items;
+  const nlohmann::json v = nlohmann::json::parse(readAll(json));
+  REQUIRE(v.is_array());
+  REQUIRE(v.size() == 2);
+  const nlohmann::json& cue = v[0];
+  CHECK(cue["tracker"] == "cuetrack");
+  const nlohmann::json& seqs = cue["sequences"];
   REQUIRE(seqs.size() == 2);
-  CHECK(seqs[0].get("overlap")->kind == minijson::Value::Null);
-  CHECK(seqs[1].get("name")->s == "moving");
-  CHECK(seqs[1].get("frames")->n == 7);  // 8 frames, the first initialises
-  REQUIRE(seqs[1].get("overlap")->kind == minijson::Value::Number);
-  CHECK(seqs[1].get("overlap")->n > 30.0);
-  CHECK(seqs[1].get("allocs")->n == 0.0);  // the core does not allocate while tracking
+  CHECK(seqs[0]["overlap"].is_null());
+  CHECK(seqs[1]["name"] == "moving");
+  CHECK(seqs[1]["frames"] == 7);  // 8 frames, the first initialises
+  REQUIRE(seqs[1]["overlap"].is_number());
+  CHECK(seqs[1]["overlap"].get<double>() > 30.0);
+  CHECK(seqs[1]["allocs"].get<double>() == 0.0);  // the core does not allocate while tracking
 }
 #endif
 
@@ -143,18 +142,17 @@ TEST_CASE("3D presets place a synthetic target's centre within centimetres; 2D o
       runBench("synth:moving --frames 60 --runs 2 --quiet --config best,2.1,2.4 --json " + json);
   CHECK(r.exitCode == 0);
   CHECK(r.out.find("3D centre error") != std::string::npos);
-  minijson::Value v;
-  REQUIRE(minijson::parse(readAll(json), &v));
-  REQUIRE(v.items.size() == 3);
-  for (int i = 0; i < 2; ++i) {
-    const minijson::Value* s = &v.items[static_cast<size_t>(i)].get("sequences")->items[0];
-    INFO(v.items[static_cast<size_t>(i)].get("config")->s);
-    REQUIRE(s->get("center_mm")->kind == minijson::Value::Number);
-    CHECK(s->get("center_mm")->n < 30.0);
-    CHECK(s->get("center_z_mm")->n < 15.0);
+  const nlohmann::json v = nlohmann::json::parse(readAll(json));
+  REQUIRE(v.size() == 3);
+  for (size_t i = 0; i < 2; ++i) {
+    const nlohmann::json& s = v[i]["sequences"][0];
+    INFO(v[i]["config"].get<std::string>());
+    REQUIRE(s["center_mm"].is_number());
+    CHECK(s["center_mm"].get<double>() < 30.0);
+    CHECK(s["center_z_mm"].get<double>() < 15.0);
   }
-  CHECK(v.items[2].get("config")->s == "2.4");
-  CHECK(v.items[2].get("sequences")->items[0].get("center_mm")->kind == minijson::Value::Null);
+  CHECK(v[2]["config"] == "2.4");
+  CHECK(v[2]["sequences"][0]["center_mm"].is_null());
   std::remove(json.c_str());
 }
 

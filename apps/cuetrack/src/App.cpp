@@ -52,7 +52,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   AppOptions opt;
   switch (parseOptions(argc, argv, &opt, err, sizeof err)) {
     case ParseResult::Help:
-      std::fputs(usageText(), stdout);
+      std::fputs(usageText().c_str(), stdout);
       return platform::stdoutWritten("cuetrack") ? kExitOk : kExitOutput;
     case ParseResult::Error:
       reporter.report(err);

@@ -1,8 +1,10 @@
-// The command line of `cuetrack`, parsed into a plain struct (no allocation).
+// The command line of `cuetrack`, parsed into a plain struct, through the tools' one
+// command-line layer (apps/common).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "cuetrack/core/Geometry.hpp"
 
@@ -47,12 +49,16 @@ struct AppOptions {
   bool select = false;                      // --select: drag the target box on frame 1
   const char* snapshotPath = nullptr;       // --snapshot FILE.png: frame 1 + grid, then exit
   const char* videoPath = nullptr;          // --video FILE.avi: every frame with its track
+  // The texts as read: the pointers above point into them (nullptr: not given).
+  struct Texts {
+    std::string source, serial, out, preset, mavlinkUdp, snapshot, video;
+  } texts;
 };
 
 enum class ParseResult : uint8_t { Run, Help, Error };
 
 ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size_t errLen);
-const char* usageText();
+std::string usageText();  // --help, generated from the same declarations
 inline constexpr const char* kDefaultScene = "moving";
 
 }  // namespace cuetrack::app

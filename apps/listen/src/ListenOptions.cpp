@@ -1,95 +1,104 @@
 #include "ListenOptions.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 
+#include "cuetrack/cli/Command.hpp"
+#include "cuetrack/cli/Values.hpp"
 #include "cuetrack/platform/CommandText.hpp"
-#include "cuetrack/platform/OptionOnce.hpp"
 
 namespace cuetrack::listen {
 namespace {
 
-bool parseInt(const char* s, long lo, long hi, long* out) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(s, &end, 10);
-  if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi) return false;
-  *out = v;
-  return true;
+const char* kAbout =
+    "Decodes cuetrack's serial stream (docs/serial-protocol.md): one line per track on\n"
+    "stdout, or with --csv a CSV file (header + one row per track; '-' = stdout). Other\n"
+    "messages (ack, error, heartbeat) go to stdout, or to stderr with --csv. The port is\n"
+    "taken exclusively (lock file, flock, TIOCEXCL): a second listener is refused.";
+
+const char* kFooter =
+    "The last line gives the totals: messages by type, rejected frames, the first and\n"
+    "last seq seen and the messages lost (seq gaps).\n"
+    "exit codes: 0 interrupted (SIGINT/SIGTERM/SIGHUP) or --tracks reached; 1 the port\n"
+    "  cannot be opened (missing, in use by another program), went away (without\n"
+    "  --reconnect), or a command cannot be sent; 2 bad command line (an option other\n"
+    "  than --send given twice too); 3 the CSV (or, without --csv, stdout) or the state\n"
+    "  file write failed; 4 idle timeout";
+
+// A whole number in [lo, hi], else `want` as the reason.
+cli::Convert whole(long lo, long hi, const char* want, long* out) {
+  return [lo, hi, want, out](const std::string& v) {
+    return cli::wholeNumber(v, lo, hi, out).empty() ? std::string() : std::string(want);
+  };
 }
 
-// The rates termios has on Linux (SerialPort::baudSupported, kept here so the parser
-// needs no OS code).
-bool baudSupported(long b) {
-  static const long kBauds[] = {9600,   19200,  38400,  57600,  115200,
-                                230400, 460800, 500000, 576000, 921600};
-  for (long k : kBauds)
-    if (k == b) return true;
-  return false;
+// Every option of cuetrack-listen, into *o.
+void declare(cli::Command& cmd, ListenOptions* o, std::vector<std::string>* ports) {
+  cmd.positionals("PORT", "the serial port (a tty, a socat pty)", ports);
+  cmd.option("--baud", "N", "9600..921600 (default 115200)", [o](const std::string& v) {
+    int b = 0;
+    const std::string why = cli::baudRate(v, &b);
+    o->baud = b;
+    return why;
+  });
+  cmd.text("--csv", "FILE", "a CSV file instead of lines on stdout ('-' = stdout)", &o->csv);
+  cmd.list("--send", "COMMAND",
+           "start:X,Y,W,H, reset, stop or rate:HZ, sent once the device is up (repeatable)",
+           &o->sendTexts);
+  // 0 would wait for nothing.
+  cmd.option("--tracks", "N", "exit after N track messages (N >= 1)",
+             whole(1, 2000000000L, "expected a count >= 1", &o->maxTracks));
+  cmd.option("--idle-timeout", "S", "exit with code 4 when nothing arrives for S seconds",
+             whole(1, 86400, "expected seconds >= 1", &o->idleS));
+  cmd.flag("--reconnect",
+           "a port that goes away (unplugged): wait for it, report the seq gap (not exit 1)",
+           &o->reconnect);
+  cmd.option("--wait-port", "S",
+             "a PORT not there yet: wait up to S seconds for it (default 5, 0: fail at once)",
+             whole(0, 86400, "expected seconds >= 0", &o->waitPortS));
+  cmd.text("--state", "FILE",
+           "keep the last seq seen in FILE (each second, at exit): the next run reports losses",
+           &o->state);
 }
 
 }  // namespace
 
+std::string listenHelp() {
+  cli::Command cmd("cuetrack-listen", kAbout, kFooter, cli::Quotes::None);
+  ListenOptions o;
+  std::vector<std::string> ports;
+  declare(cmd, &o, &ports);
+  return cmd.help();
+}
+
 ListenParse parseListenOptions(int argc, char** argv, ListenOptions* o, char* err, size_t errLen) {
   *o = ListenOptions{};
-  platform::OptionOnce once;
-  for (int i = 1; i < argc; ++i) {
-    const char* a = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (a[0] == '-' && std::strcmp(a, "--send") != 0 && !once.first(a, err, errLen))
-      return ListenParse::Error;
-    if (std::strcmp(a, "--help") == 0 || std::strcmp(a, "-h") == 0) {
-      return ListenParse::Help;
-    } else if (std::strcmp(a, "--baud") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 1, 4000000, &o->baud) || !baudSupported(o->baud)) {
-        std::snprintf(err, errLen, "--baud %s: unsupported (9600..921600)", argv[i]);
-        return ListenParse::Error;
-      }
-    } else if (std::strcmp(a, "--csv") == 0 && hasValue) {
-      o->csvPath = argv[++i];
-    } else if (std::strcmp(a, "--state") == 0 && hasValue) {
-      o->statePath = argv[++i];
-    } else if (std::strcmp(a, "--reconnect") == 0) {
-      o->reconnect = true;
-    } else if (std::strcmp(a, "--send") == 0 && hasValue) {
-      if (o->numSends >= ListenOptions::kMaxSends) {
-        std::snprintf(err, errLen, "too many --send (at most %d)", ListenOptions::kMaxSends);
-        return ListenParse::Error;
-      }
-      o->sends[o->numSends++] = argv[++i];
-    } else if (std::strcmp(a, "--tracks") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 1, 2000000000L, &o->maxTracks)) {  // 0 would wait for nothing
-        std::snprintf(err, errLen, "--tracks %s: expected a count >= 1", argv[i]);
-        return ListenParse::Error;
-      }
-    } else if (std::strcmp(a, "--idle-timeout") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 1, 86400, &o->idleS)) {
-        std::snprintf(err, errLen, "--idle-timeout %s: expected seconds >= 1", argv[i]);
-        return ListenParse::Error;
-      }
-    } else if (std::strcmp(a, "--wait-port") == 0 && hasValue) {
-      if (!parseInt(argv[++i], 0, 86400, &o->waitPortS)) {
-        std::snprintf(err, errLen, "--wait-port %s: expected seconds >= 0", argv[i]);
-        return ListenParse::Error;
-      }
-    } else if (a[0] == '-' && a[1] != '\0') {
-      std::snprintf(err, errLen, "unknown option or missing value: '%s' (see --help)", a);
-      return ListenParse::Error;
-    } else if (!o->portPath) {
-      o->portPath = a;
-    } else {
-      std::snprintf(err, errLen, "unexpected argument '%s' (one PORT only)", a);
-      return ListenParse::Error;
-    }
-  }
-  if (!o->portPath) {
+  cli::Command cmd("cuetrack-listen", kAbout, kFooter, cli::Quotes::None);
+  std::vector<std::string> ports;
+  declare(cmd, o, &ports);
+  const cli::Command::Parsed parsed = cmd.check(argc, argv, err, errLen);
+  if (parsed != cli::Command::Parsed::Run)
+    return parsed == cli::Command::Parsed::Help ? ListenParse::Help : ListenParse::Error;
+  if (ports.empty()) {
     std::snprintf(err, errLen, "missing PORT (see --help)");
     return ListenParse::Error;
   }
+  if (ports.size() > 1) {
+    std::snprintf(err, errLen, "unexpected argument '%s' (one PORT only)",
+                  cli::printable(ports[1]).c_str());
+    return ListenParse::Error;
+  }
+  if (o->sendTexts.size() > static_cast<size_t>(ListenOptions::kMaxSends)) {
+    std::snprintf(err, errLen, "too many --send (at most %d)", ListenOptions::kMaxSends);
+    return ListenParse::Error;
+  }
+  o->port = ports[0];
+  o->portPath = o->port.c_str();
+  o->csvPath = cmd.given("--csv") ? o->csv.c_str() : nullptr;
+  o->statePath = cmd.given("--state") ? o->state.c_str() : nullptr;
+  o->numSends = static_cast<int>(o->sendTexts.size());
   // Every command is checked before the port is touched.
   for (int i = 0; i < o->numSends; ++i) {
+    o->sends[i] = o->sendTexts[static_cast<size_t>(i)].c_str();
     if (!platform::parseCommandText(o->sends[i], static_cast<uint16_t>(i + 1), &o->commands[i], err,
                                     errLen))
       return ListenParse::Error;

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
+#include <vector>
 
 #include "cuetrack_proto.h"
 
@@ -9,6 +11,9 @@ namespace cuetrack::listen {
 
 struct ListenOptions {
   static constexpr int kMaxSends = 32;
+  // The texts as read; the pointers below point into them (nullptr: not given).
+  std::string port, csv, state;
+  std::vector<std::string> sendTexts;
   const char* portPath = nullptr;
   const char* csvPath = nullptr;
   const char* statePath = nullptr;  // --state FILE: the last seq across runs
@@ -24,8 +29,11 @@ struct ListenOptions {
 
 enum class ListenParse { Run, Help, Error };
 
-// Error: one line in err (an unknown or repeated option, a bad value, a bad command,
-// no PORT). Every --send is parsed here, before anything touches the port.
+// Through the tools' command-line layer (apps/common). Error: one line in err (an
+// unknown or repeated option, a bad value, a bad command, no PORT). Every --send is
+// parsed here, before anything touches the port.
 ListenParse parseListenOptions(int argc, char** argv, ListenOptions* out, char* err, size_t errLen);
+// --help, generated from the same declarations.
+std::string listenHelp();
 
 }  // namespace cuetrack::listen

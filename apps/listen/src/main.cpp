@@ -22,34 +22,6 @@ namespace {
 
 using namespace cuetrack;
 
-const char* kUsage =
-    "usage: cuetrack-listen PORT [--baud N] [--csv FILE] [--send COMMAND]... [--tracks N]\n"
-    "                       [--idle-timeout SECONDS] [--reconnect] [--state FILE]\n"
-    "                       [--wait-port SECONDS]\n"
-    "Decodes cuetrack's serial stream (docs/serial-protocol.md): one line per track on\n"
-    "stdout, or with --csv a CSV file (header + one row per track; '-' = stdout). Other\n"
-    "messages (ack, error, heartbeat) go to stdout, or to stderr with --csv. The port is\n"
-    "taken exclusively (lock file, flock, TIOCEXCL): a second listener is refused.\n"
-    "  --baud N             9600..921600 (default 115200)\n"
-    "  --send COMMAND       start:X,Y,W,H  reset  stop  rate:HZ; sent in order as soon as\n"
-    "                       the first message shows the device is up (may be repeated)\n"
-    "  --tracks N           exit after N track messages (N >= 1)\n"
-    "  --idle-timeout S     exit with code 4 when nothing arrives for S seconds\n"
-    "  --reconnect          when the port goes away (USB unplugged), wait for it to come\n"
-    "                       back instead of exiting 1; the seq gap across it is reported\n"
-    "  --wait-port S        PORT not there yet (a USB adapter being plugged in, a socat\n"
-    "                       pty starting) in a folder that exists: wait up to S seconds\n"
-    "                       for it (default 5, 0 = fail at once)\n"
-    "  --state FILE         keep the last seq seen in FILE (written every second and at\n"
-    "                       exit); the next run reports the messages lost in between\n"
-    "The last line gives the totals: messages by type, rejected frames, the first and\n"
-    "last seq seen and the messages lost (seq gaps).\n"
-    "exit codes: 0 interrupted (SIGINT/SIGTERM/SIGHUP) or --tracks reached; 1 the port\n"
-    "  cannot be opened (missing, in use by another program), went away (without\n"
-    "  --reconnect), or a command cannot be sent; 2 bad command line (an option other\n"
-    "  than --send given twice too); 3 the CSV (or, without --csv, stdout) or the state\n"
-    "  file write failed; 4 idle timeout\n";
-
 constexpr int kExitPort = 1;
 constexpr int kExitUsage = 2;
 constexpr int kExitOutput = 3;
@@ -119,7 +91,7 @@ int main(int argc, char** argv) {
   static listen::ListenOptions opt;  // static: 32 parsed commands
   switch (listen::parseListenOptions(argc, argv, &opt, err, sizeof err)) {
     case listen::ListenParse::Help:
-      std::fputs(kUsage, stdout);
+      std::fputs(listen::listenHelp().c_str(), stdout);
       return platform::stdoutWritten("cuetrack-listen") ? 0 : kExitOutput;
     case listen::ListenParse::Error:
       problems.report(err);
