@@ -18,8 +18,8 @@ Tracker& sharedTracker() {
 // best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
 // best-nofastmotion (no jumping particles, no coasting over dropped frames),
 // best-nocorrelation (no template cue), best-noocclusion (learns covered frames too),
-// 1.1-centrednegatives (2D near negatives centred on the estimate). And one switch on:
-// best-filter (the correlation filter as the correlation cue, instead of the template).
+// best-template (in 2D the gray template as the correlation cue, not the correlation
+// filter), 1.1-centrednegatives (2D near negatives centred on the estimate).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
     const char* suffix;
@@ -29,6 +29,7 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
                               {"-fixedsize", &TrackerConfig::adaptCylinderSize},
                               {"-nofastmotion", &TrackerConfig::fastMotion},
                               {"-nocorrelation", &TrackerConfig::correlationCue},
+                              {"-template", &TrackerConfig::correlationFilter},
                               {"-noocclusion", &TrackerConfig::occlusionGate},
                               {"-centrednegatives", &TrackerConfig::anchoredNegatives2d}};
   for (const Off& o : kOffs) {
@@ -40,15 +41,6 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
     if (!parsePreset(name.substr(0, name.size() - suffix.size()).c_str(), &p)) return false;
     *out = presetConfig(p);
     out->*(o.flag) = false;
-    return true;
-  }
-  const std::string on = "-filter";
-  if (name.size() > on.size() && name.compare(name.size() - on.size(), on.size(), on) == 0) {
-    Preset p;
-    if (!parsePreset(name.substr(0, name.size() - on.size()).c_str(), &p)) return false;
-    *out = presetConfig(p);
-    if (!out->correlationCue) return false;  // the filter replaces the cue: it must be on
-    out->correlationFilter = true;
     return true;
   }
   return false;

@@ -44,8 +44,8 @@ const char* kFooter =
     "--config: 1.1 ... 1.4, 2.1 ... 2.5, best (the default), or a preset with a\n"
     "  beyond-the-paper switch off: best-nolost, best-fixedsize, best-nofastmotion,\n"
     "  best-nocorrelation, best-noocclusion; or a paper preset with 2D negatives centred:\n"
-    "  1.1-centrednegatives; or best-filter (the correlation filter as the correlation\n"
-    "  cue, not the gray template).\n"
+    "  1.1-centrednegatives; best-template (in 2D the gray template as the correlation\n"
+    "  cue, not the correlation filter).\n"
     "SEQUENCE: a BoBoT video (NAME.avi, ground truth NAME.gt.txt beside it), an RGB-D\n"
     "  folder, an OTB folder, a fakenect recording (groundtruth.txt beside INDEX.txt),\n"
     "  or synth:<scene>. A missing or broken sequence is reported and skipped.\n"
@@ -192,7 +192,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       if (!isCuetrackConfig(c)) {
         *err = "--config: unknown configuration '" + c +
                "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
-               "best-nofastmotion, best-nocorrelation, 1.1-centrednegatives; best-filter)";
+               "best-nofastmotion, best-nocorrelation, 1.1-centrednegatives, best-template)";
         return false;
       }
       configs.push_back(c);

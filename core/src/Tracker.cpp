@@ -174,8 +174,11 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   addNegatives(b, _set.numNegatives() + tuning::training::kExamples, roi);  // fill the FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
   train();
-  if (_config.correlationCue && _config.correlationFilter) _dcf.reset(frame.rgb, b);
-  if (_config.correlationCue && !_config.correlationFilter) _corr.reset(_channels.tables(), b);
+  // The filter in 2D only: in 3D it cost the carried target (`held`) 0.9 against a seed
+  // spread of 0.7 (docs/algorithm.md), so 3D keeps the gray template.
+  _filterCue = _config.correlationCue && _config.correlationFilter && !_is3d;
+  if (_filterCue) _dcf.reset(frame.rgb, b);
+  if (_config.correlationCue && !_filterCue) _corr.reset(_channels.tables(), b);
 
   _sizer.clear();
   if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
@@ -190,9 +193,8 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
 
 void Tracker::learn(const Box& estimate, const PixelRect& roi) {
   addExample(estimate, true);
-  if (_config.correlationCue && _config.correlationFilter)
-    _dcf.learn(_rgb, estimate, tuning::dcf::kLearnRate);
-  if (_config.correlationCue && !_config.correlationFilter)
+  if (_filterCue) _dcf.learn(_rgb, estimate, tuning::dcf::kLearnRate);
+  if (_config.correlationCue && !_filterCue)
     _corr.learn(_channels.tables(), estimate, tuning::correlation::kLearnRate);
   addNegatives(estimate, tuning::training::kNegativesPerUpdate, roi);
   if (_config.dynamicPool && _config.sampling == FeatureSampling::Sparse) {
@@ -246,8 +248,8 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
                     static_cast<float>(roi.height()) + 2.f * m * meanH},
                 _imageW, _imageH);
   if (_config.correlationCue && !wasLost && (_corr.ready() || _dcf.ready())) {
-    const Box around = _config.correlationFilter ? CorrelationFilter::region(_lastBox)
-                                                 : CorrelationCue::region(_lastBox);
+    const Box around =
+        _filterCue ? CorrelationFilter::region(_lastBox) : CorrelationCue::region(_lastBox);
     roi = unite(roi, clipBox(around, _imageW, _imageH));
   }
   // Lost: the template searches the whole image, a few tiles a frame.
@@ -354,11 +356,11 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     }
     learn(clampToImage(e.box), roi);
     learned = true;
-  } else if (_config.correlationCue && _config.correlationFilter && !miss && !e.box.empty() &&
-             _state == TrackState::Tracking && !_lost.onProbation()) {
+  } else if (_filterCue && !miss && !e.box.empty() && _state == TrackState::Tracking &&
+             !_lost.onProbation()) {
     // The filter follows the target on every frame it is tracked, not only on those fit
     // for the classifier: its negatives are the context itself, and a filter left behind
-    // by a turning or deforming target loses it (measured: docs/algorithm.md).
+    // by a turning or deforming target loses it (docs/algorithm.md).
     _dcf.learn(_rgb, clampToImage(e.box), tuning::dcf::kLearnRate);
   }
   // The depth the target was last confirmed at: learnt, or found again (it may have
@@ -457,8 +459,7 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
 }
 
 bool Tracker::searchCue(const Box& around, bool scales) {
-  return _config.correlationFilter ? _dcf.search(_rgb, around, scales)
-                                   : _corr.search(_channels.tables(), around);
+  return _filterCue ? _dcf.search(_rgb, around, scales) : _corr.search(_channels.tables(), around);
 }
 
 void Tracker::correlate(float dtS) {
@@ -471,23 +472,23 @@ void Tracker::correlate(float dtS) {
   for (int i = 0; i < n; ++i) {
     const Box& b = _boxes[i];
     const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
-    _corrScores[i] = b.empty()                   ? CorrelationCue::kNoResponse
-                     : _config.correlationFilter ? _dcf.at(u, v)
-                                                 : _corr.at(u, v);
+    _corrScores[i] = b.empty()    ? CorrelationCue::kNoResponse
+                     : _filterCue ? _dcf.at(u, v)
+                                  : _corr.at(u, v);
   }
 }
 
 void Tracker::scanLost(float dtS) {
   // While lost: the template searched over the image, a few tiles a frame at the last
   // learnt size, the tiles' best peak (if strong enough) given particles to confirm.
-  if (!(_config.correlationFilter ? _dcf.ready() : _corr.ready())) return;
+  if (!(_filterCue ? _dcf.ready() : _corr.ready())) return;
   const Box last = particleBox(_lastEstimate);
   if (last.empty()) return;
   // A search covers window positions within kReach cells (1.5 sides) of its centre (the
   // filter: kPadding / 2 sides): tiles 3 (kPadding) sides apart cover the image.
-  const float step = _config.correlationFilter ? CorrelationFilter::kPadding
-                                               : 2.f * static_cast<float>(CorrelationCue::kReach) /
-                                                     static_cast<float>(CorrelationCue::kCells);
+  const float step = _filterCue ? CorrelationFilter::kPadding
+                                : 2.f * static_cast<float>(CorrelationCue::kReach) /
+                                      static_cast<float>(CorrelationCue::kCells);
   const int nx = 1 + static_cast<int>((static_cast<float>(_imageW) - last.w) / (step * last.w));
   const int ny = 1 + static_cast<int>((static_cast<float>(_imageH) - last.h) / (step * last.h));
   const int tiles = nx * ny;

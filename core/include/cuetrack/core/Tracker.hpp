@@ -97,12 +97,12 @@ class Tracker {
   bool depthMeasured(const Particle& q) const;
   void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
   void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
-  // correlationFilter: the same from the correlation filter (CorrelationFilter) instead.
+  // correlationFilter in 2D: the same from the correlation filter (CorrelationFilter).
   bool searchCue(const Box& around, bool scales);
-  float cuePeak() const { return _config.correlationFilter ? _dcf.peak() : _corr.peak(); }
-  Box cuePeakBox() const { return _config.correlationFilter ? _dcf.peakBox() : _corr.peakBox(); }
+  float cuePeak() const { return _filterCue ? _dcf.peak() : _corr.peak(); }
+  Box cuePeakBox() const { return _filterCue ? _dcf.peakBox() : _corr.peakBox(); }
   float cueMinPeak() const {
-    return _config.correlationFilter ? tuning::dcf::kMinPeak : tuning::correlation::kMinPeak;
+    return _filterCue ? tuning::dcf::kMinPeak : tuning::correlation::kMinPeak;
   }
   // One particle in correlation::kEvery drawn at window c from `from`, and scored.
   void drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity);
@@ -148,7 +148,8 @@ class Tracker {
   Particle _lastEstimate{};
   Particle _prevEstimate{};  // the last frame's estimate (correlate() moves it)
   CorrelationCue _corr;
-  CorrelationFilter _dcf;            // correlationFilter: instead of _corr
+  CorrelationFilter _dcf;            // correlationFilter, in 2D: instead of _corr
+  bool _filterCue = false;           // this track's cue is _dcf
   RgbView _rgb{};                    // update()'s colour image, for _dcf
   bool _corrActive = false;          // this frame's map was searched
   int _scanTile = 0;                 // scanLost: the next tile
