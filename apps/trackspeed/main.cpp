@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
   std::string presetName = "2.1";
   std::string scene = "moving";
   int frames = 150, particles = -1, weak = -1;
-  bool icount = false, hash = false;
+  bool icount = false, hash = false, rgbOnly = false;
   Preset preset;
   SceneSpec spec;
   cli::Command cmd("cuetrack-trackspeed",
@@ -82,6 +82,9 @@ int main(int argc, char** argv) {
              kMaxWeakClassifiers, &weak);
   cmd.flag("--icount", "read no clock (for qemu-icount: count(N) - count(0), / N)", &icount);
   cmd.flag("--hash", "print an FNV-1a hash of every frame's box, confidence and state", &hash);
+  cmd.flag("--rgb-only",
+           "drop the scene's depth (best then runs 2D, with the correlation filter; 2.x fail)",
+           &rgbOnly);
   if (const int rc = cmd.parse(argc, argv); rc >= 0) return rc;
   parsePreset(presetName.c_str(), &preset);  // checked as it was read
   if (!makeScene(scene.c_str(), &spec))
@@ -99,7 +102,13 @@ int main(int argc, char** argv) {
       return kExitRun;
     }
   }
-  const InitError e = tracker.init(slots[0].frame(), slots[0].groundTruth);
+  // --rgb-only: the frames' views without depth (the rendered depth stays unread).
+  auto frameOf = [rgbOnly](const FrameSlot& slot) {
+    Frame f = slot.frame();
+    if (rgbOnly) f.depthMm = DepthView{};
+    return f;
+  };
+  const InitError e = tracker.init(frameOf(slots[0]), slots[0].groundTruth);
   if (e != InitError::None) {
     std::fprintf(stderr, "cuetrack-trackspeed: %s: the tracker refused the first box: %s\n",
                  scene.c_str(), toString(e));
@@ -114,7 +123,7 @@ int main(int argc, char** argv) {
   while (n < frames) {
     const int period = 2 * (kRendered - 1);
     const int k = (n + 1) % period;
-    Frame f = slots[k < kRendered ? k : period - k].frame();
+    Frame f = frameOf(slots[k < kRendered ? k : period - k]);
     f.timeUs = static_cast<uint64_t>(n + 1) * 33333u;  // time always runs forwards
     const TrackResult r = tracker.update(f);
     learned += r.learned ? 1 : 0;
@@ -137,11 +146,11 @@ int main(int argc, char** argv) {
     return platform::stdoutWritten("cuetrack-trackspeed") ? 0 : kExitRun;
   }
   std::printf(
-      "preset %s scene %s %dx%d frames %d particles %d weak %d learned %d\n"
+      "preset %s%s scene %s %dx%d frames %d particles %d weak %d learned %d\n"
       "median update %.0f us (features %.0f, predict %.0f, weigh %.0f, learn %.0f); "
       "tracker sizeof %zu B\n",
-      presetName.c_str(), scene.c_str(), spec.width, spec.height, n, cfg.numParticles,
-      cfg.numWeakClassifiers, learned, median(totalUs, n), median(featuresUs, n),
+      presetName.c_str(), rgbOnly ? " (rgb only)" : "", scene.c_str(), spec.width, spec.height, n,
+      cfg.numParticles, cfg.numWeakClassifiers, learned, median(totalUs, n), median(featuresUs, n),
       median(predictUs, n), median(weighUs, n), median(learnUs, n), sizeof(Tracker));
   return platform::stdoutWritten("cuetrack-trackspeed") ? 0 : kExitRun;
 }

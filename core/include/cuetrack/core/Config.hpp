@@ -47,7 +47,8 @@ inline constexpr std::size_t kTrackerBudgetBytes = 16u * 1024u * 1024u;
 //   particles          2 x 2000 x 32 B + 2000 x 4 B    =   136,000 B (ParticleFilter)
 //   per-particle boxes and scores 2000 x 20 B          =    40,000 B (Tracker)
 //   table cells per distinct feature 32 x 2000 x 2 B   =   128,000 B (StrongClassifier)
-//   total                                              ~10.5 MB < 16 MiB (16,777,216 B)
+//   correlation filter (2D) 12 x 32^2 x 4 B x 5 + scratch =  495,664 B (CorrelationFilter)
+//   total                                              ~11.1 MB < 16 MiB (16,777,216 B)
 inline constexpr std::size_t kIntegralBytes = 5u * kMaxIntegralCells * 4u;
 inline constexpr std::size_t kPatchBytes =
     std::size_t{kMaxTrainingExamples} * (5u * 33u * 33u * 4u + 2u * 33u * 2u);
