@@ -426,6 +426,91 @@ TEST_CASE("MavlinkLink: track commands are acknowledged once, after the tracker'
   CHECK(rig.control.resets == 1);
 }
 
+TEST_CASE("MavlinkLink: only accepted senders are obeyed; strangers are refused and counted") {
+  LinkConfig config;
+  config.acceptSysIds[0] = 1;  // the autopilot
+  config.acceptSysIds[1] = 255;  // the ground station
+  config.acceptSysIdCount = 2;
+  FakeClock clock{5000};
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  static MavlinkLink link{cable.a(), clock, reporter, config};  // 64 KiB: static
+  Control control;
+  Parser host;
+  auto sendFrom = [&](uint8_t sys, const std::vector<uint8_t>& frame) {
+    auto w = frame;
+    w[5] = sys;  // the sender's system id, then the CRC again
+    const uint16_t crc = crcAccumulate(messageInfo(kMsgCommandLong)->crcExtra,
+                                       crc16(w.data() + 1, kHeaderBytes - 1 + w[1]));
+    w[kHeaderBytes + w[1]] = static_cast<uint8_t>(crc);
+    w[kHeaderBytes + w[1] + 1] = static_cast<uint8_t>(crc >> 8);
+    REQUIRE(cable.b().write(w.data(), w.size()).bytes == w.size());
+  };
+  auto acks = [&] {
+    std::vector<CommandAck> out;
+    uint8_t buf[512];
+    for (IoResult r; (r = cable.b().read(buf, sizeof buf, 0)).bytes > 0;) {
+      Message m;
+      for (size_t i = 0; i < r.bytes; ++i)
+        if (host.push(buf[i], &m) && m.header.msgId == kMsgCommandAck)
+          out.push_back(unpackCommandAck(m.payload));
+    }
+    return out;
+  };
+  const auto track = commandFrame(kCmdCameraTrackRectangle, {0.1f, 0.1f, 0.2f, 0.2f});
+  const auto stop = commandFrame(kCmdCameraStopTracking, {0});
+  sendFrom(7, track);  // a stranger on the network
+  sendFrom(7, stop);
+  link.poll(control, LinkStatus{});
+  CHECK(acks().empty());  // no answer: it learns nothing
+  CHECK(control.starts.empty());
+  CHECK(control.resets == 0);
+  CHECK(link.stats().rxRefused == 2);
+  sendFrom(255, stop);  // the ground station
+  sendFrom(1, stop);    // the autopilot
+  link.poll(control, LinkStatus{});
+  const auto got = acks();
+  REQUIRE(got.size() == 2);
+  CHECK(got[0].result == kResultAccepted);
+  CHECK(control.resets == 2);
+  CHECK(link.stats().rxRefused == 2);
+}
+
+TEST_CASE("MavlinkLink: broadcasts obeyed only where the camera protocol allows them") {
+  static LinkRig rig;
+  // Component 0 (every component of system 1), and system 0 (every system).
+  rig.send(commandFrame(kCmdRequestMessage, {259}, 1, 0));  // discovery: answered
+  rig.send(commandFrame(kCmdCameraStopTracking, {0}, 0, 100));  // camera id 0: obeyed
+  rig.send(commandFrame(kCmdCameraTrackRectangle, {0.1f, 0.1f, 0.2f, 0.2f, 0.f}, 1, 0));
+  rig.poll();
+  auto acks = rig.acks(rig.read());
+  REQUIRE(acks.size() == 2);  // the rectangle waits for the tracker
+  CHECK(acks[0].command == kCmdRequestMessage);
+  CHECK(acks[0].result == kResultAccepted);
+  CHECK(acks[1].result == kResultAccepted);
+  CHECK(rig.control.resets == 1);
+  CHECK(rig.control.starts.size() == 1);
+  rig.link.answerStart(rig.control.starts[0].token, StartOutcome::Started);
+  rig.read();
+  // A broadcast must name camera 0: NaN (not given) or our id is DENIED, as the camera
+  // protocol says; a broadcast interval change is refused without an answer; someone
+  // else's broadcast (an autopilot's mission camera command) is not ours at all.
+  rig.send(commandFrame(kCmdCameraStopTracking, {NAN}, 1, 0));
+  rig.send(commandFrame(kCmdCameraTrackPoint, {0.5f, 0.5f, 0.f, 100.f}, 1, 0));
+  rig.send(commandFrame(kCmdSetMessageInterval, {275, 1000000}, 1, 0));
+  rig.send(commandFrame(2000, {0, 1, 0}, 1, 0));  // IMAGE_START_CAPTURE
+  rig.poll();
+  acks = rig.acks(rig.read());
+  REQUIRE(acks.size() == 2);
+  CHECK(acks[0].command == kCmdCameraStopTracking);
+  CHECK(acks[0].result == kResultDenied);
+  CHECK(acks[1].command == kCmdCameraTrackPoint);
+  CHECK(acks[1].result == kResultDenied);
+  CHECK(rig.control.resets == 1);
+  CHECK(rig.control.starts.size() == 1);
+  CHECK(rig.link.stats().rxRefused == 3);
+}
+
 TEST_CASE("MavlinkLink: CAMERA_INFORMATION on request, message intervals, bad bytes counted") {
   static LinkRig rig;
   rig.link.sendFrame(rig.frame(CTP_STATE_IDLE, 0));
