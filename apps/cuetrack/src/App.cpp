@@ -180,6 +180,13 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report(udp.error());
     return kExitOutput;
   }
+  if (opt.mavlinkUdp && !udp.countsDrops()) {  // said once: rx-errors cannot show them
+    std::snprintf(err, sizeof err,
+                  "%s: this system does not report the datagrams it drops (SO_RXQ_OVFL); "
+                  "rx-errors will not count them",
+                  udp.name());
+    reporter.report(err);
+  }
 
   static VideoOut video;
   bool videoOk = opt.videoPath != nullptr;
@@ -199,6 +206,8 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   po.sourceName = opt.source ? opt.source : source->name();
   po.groundTruthName = groundTruthName;
   po.warnPoorTarget = true;
+  const char* linkName = opt.mavlinkUdp ? "udp" : "serial";  // as status and final lines say
+  po.linkName = linkName;
   Pipeline pipeline(*source, slot, tracker, clock, reporter, po);
   if (opt.outPath) pipeline.addSink(&fileSink);
   // One line per frame floods a terminal: there, only with --stdout (pipes get them).
@@ -218,6 +227,9 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     mc.mount.yawDeg = opt.mountDeg[2];
     for (int i = 0; i < 3; ++i) mc.mount.offsetM[i] = opt.mountOffsetM[i];
     mc.landingPosition = opt.landingPosition;
+    mc.acceptSysIdCount = opt.acceptSysIdCount;
+    for (int i = 0; i < opt.acceptSysIdCount; ++i)
+      mc.acceptSysIds[i] = static_cast<uint8_t>(opt.acceptSysIds[i]);
     platform::ByteStream& stream = opt.mavlinkUdp ? static_cast<platform::ByteStream&>(udp) : port;
     static platform::mavlink::MavlinkLink mavlinkLink(stream, clock, reporter, mc);
     link = &mavlinkLink;
@@ -301,8 +313,10 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     closeFailed = true;
   }
 
-  if (link && !link->drain(1000))
-    reporter.report("serial: could not send the last messages within 1 s");
+  if (link && !link->drain(1000)) {
+    std::snprintf(err, sizeof err, "%s: could not send the last messages within 1 s", linkName);
+    reporter.report(err);
+  }
   if (!opt.quiet) {
     int n = std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
                           static_cast<unsigned>(pipeline.frames()),
@@ -320,8 +334,10 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     if (link && n > 0 && static_cast<size_t>(n) < sizeof err) {
       const platform::LinkStats& s = link->stats();
       std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
-                    "; serial sent %u tx-dropped %u rx-errors %u", static_cast<unsigned>(s.sent),
-                    static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors));
+                    "; %s sent %u tx-dropped %u rx %u rx-errors %u refused %u", linkName,
+                    static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
+                    static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors),
+                    static_cast<unsigned>(s.rxRefused));
     }
     reporter.report(err);
     summary.format(runUs, err, sizeof err);
@@ -342,11 +358,13 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       std::snprintf(err, sizeof err, "%d damaged frames skipped", source->skippedFrames());
       reporter.report(err);
     }
-    if (link && link->stats().txDropped > 0) {
+    if (link && (link->stats().txDropped > 0 || link->stats().rxErrors > 0 ||
+                 link->stats().rxRefused > 0)) {
       const platform::LinkStats& s = link->stats();
-      std::snprintf(err, sizeof err, "serial sent %u tx-dropped %u rx-errors %u",
-                    static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
-                    static_cast<unsigned>(s.rxErrors));
+      std::snprintf(err, sizeof err, "%s sent %u tx-dropped %u rx %u rx-errors %u refused %u",
+                    linkName, static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
+                    static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors),
+                    static_cast<unsigned>(s.rxRefused));
       reporter.report(err);
     }
   }

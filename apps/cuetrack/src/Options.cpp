@@ -16,6 +16,9 @@ namespace {
 constexpr float kMaxBoxPx = 100000.f;  // far beyond any sensor; catches 1e30 and typos
 
 bool parseLong(const char* s, long lo, long hi, long* out) {
+  // Digits only (an optional sign): strtol would also skip leading blanks.
+  const char* d = (*s == '-' || *s == '+') ? s + 1 : s;
+  if (*d < '0' || *d > '9') return false;
   char* end = nullptr;
   errno = 0;
   const long v = std::strtol(s, &end, 10);
@@ -24,9 +27,23 @@ bool parseLong(const char* s, long lo, long hi, long* out) {
   return true;
 }
 
+// Numbers on the command line are plain decimals, the same rule as --frames: "12", "-0.5",
+// ".5". strtof alone would also read hex ("0x123" as 291), exponents, inf and nan.
+bool plainDecimal(const char* s) {
+  if (*s == '+' || *s == '-') ++s;
+  int digits = 0;
+  while (*s >= '0' && *s <= '9') ++s, ++digits;
+  if (*s == '.') {
+    ++s;
+    while (*s >= '0' && *s <= '9') ++s, ++digits;
+  }
+  return digits > 0 && (*s == '\0' || *s == ',');
+}
+
 // n finite numbers "A,B,...", each within +-limit.
 bool parseFloats(const char* s, int n, float limit, float* out) {
   for (int i = 0; i < n; ++i) {
+    if (!plainDecimal(s)) return false;
     char* end = nullptr;
     out[i] = std::strtof(s, &end);
     // inf, nan and absurd values would reach the tracker as something it "tracks".
@@ -38,6 +55,26 @@ bool parseFloats(const char* s, int n, float limit, float* out) {
     }
   }
   return *s == '\0';
+}
+
+// "N[,N...]": MAVLink system ids, 1..255 each (0 is "every system", never a sender).
+bool parseSysIds(const char* s, int* ids, int cap, int* count) {
+  *count = 0;
+  for (;;) {
+    char token[8];
+    size_t n = 0;
+    while (s[n] != '\0' && s[n] != ',' && n < sizeof token - 1) {
+      token[n] = s[n];
+      ++n;
+    }
+    token[n] = '\0';
+    long id = 0;
+    if (*count >= cap || (s[n] != '\0' && s[n] != ',') || !parseLong(token, 1, 255, &id))
+      return false;
+    ids[(*count)++] = static_cast<int>(id);
+    if (s[n] == '\0') return true;
+    s += n + 1;
+  }
 }
 
 bool parseBox(const char* s, Box* out) {
@@ -93,7 +130,14 @@ const char* usageText() {
          "                     camera position on the vehicle, body frame FRD [m]\n"
          "  --mavlink-udp HOST:PORT\n"
          "                     MAVLink over UDP to HOST:PORT (a MAVLink router on a companion\n"
-         "                     computer) instead of --serial\n"
+         "                     computer) instead of --serial; commands from that peer only\n"
+         "                     MAVLink here is unsigned and unauthenticated: the link trusts its\n"
+         "                     network (anyone who can send to it, or forge a system id, can\n"
+         "                     command it; docs/mavlink.md)\n"
+         "  --mavlink-accept-sysid N[,N...]\n"
+         "                     obey commands only from these MAVLink system ids (the\n"
+         "                     autopilot's, the ground station's); others are refused and\n"
+         "                     counted (default: from any system on the link)\n"
          "  --mavlink-landing frd|angles\n"
          "                     LANDING_TARGET with x,y,z in MAV_FRAME_BODY_FRD (default, for\n"
          "                     ArduPilot) or angles and distance only (for PX4)\n"
@@ -214,6 +258,17 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
       }
       (std::strcmp(a, "--mavlink-sysid") == 0 ? out->mavSysId : out->mavCompId) =
           static_cast<int>(n);
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-accept-sysid") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      if (!parseSysIds(v, out->acceptSysIds, AppOptions::kMaxAcceptSysIds,
+                       &out->acceptSysIdCount)) {
+        std::snprintf(err, errLen,
+                      "--mavlink-accept-sysid %s: expected system ids 1..255, comma-separated, "
+                      "at most %d",
+                      v, AppOptions::kMaxAcceptSysIds);
+        return ParseResult::Error;
+      }
       if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
     } else if (std::strcmp(a, "--mavlink-mount") == 0) {
       if (!value(&v)) return ParseResult::Error;

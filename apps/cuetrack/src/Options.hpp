@@ -41,6 +41,9 @@ struct AppOptions {
   float mountDeg[3] = {0.f, 0.f, 0.f};      // camera roll, pitch, yaw on the body [deg]
   float mountOffsetM[3] = {0.f, 0.f, 0.f};  // camera position in the body frame FRD [m]
   const char* mavlinkUdp = nullptr;         // --mavlink-udp HOST:PORT instead of --serial
+  static constexpr int kMaxAcceptSysIds = 8;
+  int acceptSysIds[kMaxAcceptSysIds] = {};  // --mavlink-accept-sysid: commands only from these
+  int acceptSysIdCount = 0;                 // 0: from any system
   bool landingPosition = true;              // --mavlink-landing frd (else angles)
   const char* mavlinkOnlyOption = nullptr;  // the first --mavlink-* option given
   bool show = false;                        // --show: live window (View.hpp, host only)
