@@ -145,10 +145,10 @@ TEST_CASE("--box: non-finite and absurd values are refused at parsing, sane ones
   AppOptions o;
   std::string err;
   // Plain decimals only, as for --frames: hex, exponents and blanks are refused.
-  for (const char* box : {"1,1,inf,20", "1,1,1e30,1e30", "nan,1,10,10", "1,-inf,10,10",
-                          "1,1,10,nan", "200000,1,10,10", "1,1,100001,10", "0x123,1,10,10",
-                          "1,1,1e2,10", "1, 1,10,10", "1,,10,10", "1,1,10,10,", "-,1,10,10",
-                          "1.,.5,10,10x"}) {
+  for (const char* box :
+       {"1,1,inf,20", "1,1,1e30,1e30", "nan,1,10,10", "1,-inf,10,10", "1,1,10,nan",
+        "200000,1,10,10", "1,1,100001,10", "0x123,1,10,10", "1,1,1e2,10", "1, 1,10,10", "1,,10,10",
+        "1,1,10,10,", "-,1,10,10", "1.,.5,10,10x"}) {
     INFO(box);
     CHECK(parse({"--box", box}, &o, &err) == ParseResult::Error);
     CHECK(err.find(std::string("--box ") + box + ": expected X,Y,W,H") == 0);

@@ -393,12 +393,12 @@ TEST_CASE("--mavlink-udp: the same messages to a loopback peer, commands answere
   std::vector<uint8_t> many;
   for (int i = 0; i < 200; ++i) {
     const float none[7] = {0, 0, 0, 0, 0, 0, 0};
-    const size_t k = official::encodeCommandLong(kGcsSys, kGcsComp, 1, 100,
-                                                 static_cast<uint16_t>(40000 + i), none, w, sizeof w);
+    const size_t k = official::encodeCommandLong(
+        kGcsSys, kGcsComp, 1, 100, static_cast<uint16_t>(40000 + i), none, w, sizeof w);
     many.insert(many.end(), w, w + k);
   }
-  REQUIRE(::sendto(gcs, many.data(), many.size(), 0, reinterpret_cast<sockaddr*>(&from),
-                   fromLen) == static_cast<ssize_t>(many.size()));
+  REQUIRE(::sendto(gcs, many.data(), many.size(), 0, reinterpret_cast<sockaddr*>(&from), fromLen) ==
+          static_cast<ssize_t>(many.size()));
   REQUIRE(until([](const official::Decoded& d) { return ackOf(d, 40000 + 199); }));
   int answered = 0;
   for (const auto& d : got)

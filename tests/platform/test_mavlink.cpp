@@ -428,7 +428,7 @@ TEST_CASE("MavlinkLink: track commands are acknowledged once, after the tracker'
 
 TEST_CASE("MavlinkLink: only accepted senders are obeyed; strangers are refused and counted") {
   LinkConfig config;
-  config.acceptSysIds[0] = 1;  // the autopilot
+  config.acceptSysIds[0] = 1;    // the autopilot
   config.acceptSysIds[1] = 255;  // the ground station
   config.acceptSysIdCount = 2;
   FakeClock clock{5000};
@@ -479,7 +479,7 @@ TEST_CASE("MavlinkLink: only accepted senders are obeyed; strangers are refused 
 TEST_CASE("MavlinkLink: broadcasts obeyed only where the camera protocol allows them") {
   static LinkRig rig;
   // Component 0 (every component of system 1), and system 0 (every system).
-  rig.send(commandFrame(kCmdRequestMessage, {259}, 1, 0));  // discovery: answered
+  rig.send(commandFrame(kCmdRequestMessage, {259}, 1, 0));      // discovery: answered
   rig.send(commandFrame(kCmdCameraStopTracking, {0}, 0, 100));  // camera id 0: obeyed
   rig.send(commandFrame(kCmdCameraTrackRectangle, {0.1f, 0.1f, 0.2f, 0.2f, 0.f}, 1, 0));
   rig.poll();

@@ -222,6 +222,6 @@ TEST_CASE("UDP: a 20,000-datagram flood is counted, not lost silently") {
   CHECK(countAcks(rig.acks(), kCmdRequestMessage) == 1);
   const LinkStats& s = rig.link->stats();
   INFO("read " << s.rxFrames << ", dropped " << s.rxErrors);
-  CHECK(s.rxErrors > 0);                    // the flood overflowed the socket's buffer
+  CHECK(s.rxErrors > 0);                       // the flood overflowed the socket's buffer
   CHECK(s.rxFrames + s.rxErrors == sent + 1);  // and every datagram is read or counted
 }

@@ -40,9 +40,9 @@ class UdpSocket final : public ByteStream {
  private:
   int _fd{-1};
   bool _countsDrops{false};
-  uint32_t _kernelDrops{0};   // the socket's drop counter as the last datagram carried it
-  uint32_t _reportedDrops{0}; // of which takeRxDropped() has handed out
-  uint32_t _cutDatagrams{0};  // longer than the caller's buffer: dropped here, counted
+  uint32_t _kernelDrops{0};    // the socket's drop counter as the last datagram carried it
+  uint32_t _reportedDrops{0};  // of which takeRxDropped() has handed out
+  uint32_t _cutDatagrams{0};   // longer than the caller's buffer: dropped here, counted
   char _name[300]{};
   char _error[400]{};
 };
