@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "Options.hpp"
+#include "OutputCheck.hpp"
 #include "PacedSource.hpp"
 #include "Pipeline.hpp"
 #include "PrefetchedSource.hpp"
@@ -59,6 +60,11 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       return kExitUsage;
     case ParseResult::Run:
       break;
+  }
+  // Before anything opens: opening an output truncates it, and a reader may have it open.
+  if (!checkOutputs(opt, err, sizeof err)) {
+    reporter.report(err);
+    return kExitUsage;
   }
   // Refused even without --serial: a typo here would otherwise surface only on the
   // day the port is added.
@@ -297,6 +303,14 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   }
   const uint64_t runUs = clock.nowUs() - runStartUs;
   pipeline.finish();
+  // A source that ended before its first frame gave nothing to track: not a success.
+  const bool empty = r == StepResult::Done && pipeline.frames() == 0 && !platform::stopRequested();
+  if (empty) {
+    std::snprintf(err, sizeof err, "%s: no decodable frame%s",
+                  opt.source ? opt.source : source->name(),
+                  source->skippedFrames() > 0 ? " (every one damaged, skipped)" : " (it is empty)");
+    reporter.report(err);
+  }
   view.close();
   if (opt.videoPath && videoOk) {
     if (video.close(err, sizeof err)) {
@@ -368,6 +382,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       reporter.report(err);
     }
   }
+  if (empty) return kExitSource;
   switch (r) {
     case StepResult::SourceError:
       return kExitSource;

@@ -159,10 +159,12 @@ const char* usageText() {
          "                     serial messages dropped)\n"
          "  --help\n"
          "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM/SIGHUP, STOP command),\n"
-         "  1 source failed (cannot open, a read failed, a damaged frame, or a frame's size\n"
-         "  differs from the frame the track began on), 2 bad command line (an option given\n"
-         "  twice too; --show or --select without a display, a --select cancelled), 3 output\n"
-         "  failed (cannot open, or a write to --out/stdout/--video/--snapshot failed;\n"
+         "  1 source failed (cannot open, a read failed, a damaged frame, no decodable frame\n"
+         "  at all, or a frame's size differs from the frame the track began on), 2 bad\n"
+         "  command line (an option given twice too; --show or --select without a display, a\n"
+         "  --select cancelled; an output (--out, --video, --snapshot) that is the source, lies\n"
+         "  inside its folder, or is another output), 3 output failed (cannot open, a write\n"
+         "  to --out/stdout/--video/--snapshot failed, or --video does not read back whole;\n"
          "  tracking went on), 4 the --box, or the source's ground-truth box, refused by the\n"
          "  tracker\n";
 }
