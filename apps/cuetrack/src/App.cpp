@@ -181,6 +181,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report(port.error());
     return kExitOutput;
   }
+  if (opt.serialPath && port.notice()[0] != '\0') reporter.report(port.notice());
   static platform::UdpSocket udp;
   if (opt.mavlinkUdp && !udp.open(opt.mavlinkUdp)) {
     reporter.report(udp.error());

@@ -1,7 +1,8 @@
 // No output may overwrite an input or another output. Paths are compared by what they
 // resolve to: the same file (device and inode, so a symlink or a hard link is caught too),
 // or, for an input folder, an output anywhere inside it ("rec/INDEX.txt", a new file in a
-// recording, another name of a file in it). An output that does not exist yet is resolved through its folder. Devices
+// recording, another name of a file in it). An output that does not exist yet is resolved through
+// its folder. Devices
 // (/dev/null) are never a clash: writing one destroys no file.
 #pragma once
 
