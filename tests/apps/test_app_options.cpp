@@ -202,9 +202,13 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
   REQUIRE(parse({"--protocol", "mavlink", "--mavlink-udp", "127.0.0.1:14550"}, &o, &err) ==
           ParseResult::Run);
   CHECK(std::string(o.mavlinkUdp) == "127.0.0.1:14550");
+  REQUIRE(parse({"--serial", "x", "--protocol", "mavlink", "--mavlink-key", "k.bin"}, &o, &err) ==
+          ParseResult::Run);
+  CHECK(std::string(o.mavlinkKey) == "k.bin");
   CHECK(o.acceptSysIdCount == 0);  // from any system
   REQUIRE(parse({"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "1,255"}, &o,
                 &err) == ParseResult::Run);
+  CHECK(o.mavlinkKey == nullptr);  // unsigned unless a key is given
   REQUIRE(o.acceptSysIdCount == 2);
   CHECK(o.acceptSysIds[0] == 1);
   CHECK(o.acceptSysIds[1] == 255);
@@ -234,6 +238,7 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
        "--mavlink-landing ned: expected frd or angles"},
       {{"--serial", "x", "--mavlink-landing", "angles"}, "--mavlink-landing needs --protocol"},
       {{"--serial", "x", "--mavlink-accept-sysid", "1"}, "--mavlink-accept-sysid needs --protocol"},
+      {{"--serial", "x", "--mavlink-key", "k"}, "--mavlink-key needs --protocol"},
       {{"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "0"},
        "--mavlink-accept-sysid 0: expected system ids 1..255"},
       {{"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "1,,2"},

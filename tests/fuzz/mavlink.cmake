@@ -9,6 +9,7 @@
 set(_mav ${CMAKE_SOURCE_DIR}/platform/mavlink/src)
 cuetrack_add_fuzzer(mavlink_parser SOURCES ${CMAKE_CURRENT_LIST_DIR}/mavlink/fuzz_mavlink_parser.cpp
   ${_mav}/MavlinkCodec.cpp ${_mav}/MavlinkMessages.cpp ${_mav}/CameraMount.cpp ${_mav}/MavlinkLink.cpp
+  ${_mav}/Sha256.cpp ${_mav}/Signing.cpp
   ${CMAKE_SOURCE_DIR}/platform/common/src/QueuedPort.cpp
   ${CMAKE_SOURCE_DIR}/platform/fake/src/FakeSerial.cpp)
 target_include_directories(fuzz_mavlink_parser PRIVATE ${CMAKE_SOURCE_DIR}/platform/mavlink/include

@@ -3,14 +3,18 @@
 // MavlinkLink's behaviour over an in-memory cable with a fake clock.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "cuetrack/platform/fake/FakeClock.hpp"
 #include "cuetrack/platform/fake/FakeSerial.hpp"
 #include "cuetrack/platform/fake/MemoryReporter.hpp"
 #include "cuetrack/platform/mavlink/MavlinkLink.hpp"
+#include "cuetrack/platform/mavlink/Sha256.hpp"
 
 using namespace cuetrack;
 using namespace cuetrack::platform;
@@ -199,6 +203,63 @@ TEST_CASE("a signed frame is read (its signature skipped)") {
   Parser parser;
   CHECK(parseAll(w, parser).size() == 1);
   CHECK(parser.stats().badCrc == 0);
+}
+
+TEST_CASE("SHA-256: the FIPS 180-4 examples, whole and in pieces") {
+  auto hex = [](const std::string& text, size_t piece) {
+    Sha256 sha;
+    const auto* p = reinterpret_cast<const uint8_t*>(text.data());
+    for (size_t at = 0; at < text.size(); at += piece)
+      sha.update(p + at, std::min(piece, text.size() - at));
+    uint8_t d[32];
+    sha.final(d);
+    char out[65];
+    for (int i = 0; i < 32; ++i) std::snprintf(out + 2 * i, 3, "%02x", d[i]);
+    return std::string(out);
+  };
+  CHECK(hex("", 1) == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  CHECK(hex("abc", 1) == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  const std::string two = "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";  // 2 blocks
+  for (size_t piece : {1u, 7u, 64u, 100u})
+    CHECK(hex(two, piece) == "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+}
+
+TEST_CASE("signing: our signed frame checks with the key, not without; replays refused") {
+  SigningKey key;
+  for (int i = 0; i < 32; ++i) key.bytes[i] = static_cast<uint8_t>(i);
+  CommandLong c;
+  c.command = kCmdCameraStopTracking;
+  c.targetSystem = 1;
+  c.targetComponent = 100;
+  uint8_t p[40];
+  const size_t len = pack(c, p);
+  Header h;
+  h.sysId = 255;
+  h.compId = 190;
+  h.msgId = kMsgCommandLong;
+  uint8_t w[kMaxFrameBytes];
+  const size_t n = encodeSignedFrame(h, p, len, key, 2, 123456789, w, sizeof w);
+  REQUIRE(n == kHeaderBytes + w[1] + kCrcBytes + kSignatureBytes);
+  Parser parser;
+  auto parse = [&](const uint8_t* f, size_t k) {
+    size_t at = 0;
+    Message m;
+    REQUIRE(parser.nextInDatagram(f, k, &at, &m));
+    return m;
+  };
+  SignatureChecker checker(key);
+  CHECK(checker.check(parse(w, n)) == SignatureCheck::Good);
+  CHECK(checker.check(parse(w, n)) == SignatureCheck::Replayed);
+  SigningKey other;
+  SignatureChecker stranger(other);
+  CHECK(stranger.check(parse(w, n)) == SignatureCheck::BadSignature);
+  uint8_t plain[kMaxFrameBytes];
+  const size_t k = encodeFrame(h, p, len, plain, sizeof plain);
+  CHECK(checker.check(parse(plain, k)) == SignatureCheck::Unsigned);
+  // A new stream a minute older than the newest timestamp known: refused.
+  SignatureChecker fresh(key);
+  fresh.noteTimestamp(123456789 + kSigningNewStreamSlack + 1);
+  CHECK(fresh.check(parse(w, n)) == SignatureCheck::TooOld);
 }
 
 TEST_CASE("camera mount: forward by default, pitch -90 looks down, offset added") {

@@ -17,6 +17,7 @@
 #include "WaitingSource.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
+#include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
@@ -60,6 +61,14 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       return kExitUsage;
     case ParseResult::Run:
       break;
+  }
+  // The signing key, before anything runs: a key others can read is refused (exit 2).
+  static uint8_t mavlinkKey[32];
+  if (opt.mavlinkKey &&
+      !platform::readKeyFile(opt.mavlinkKey, mavlinkKey, sizeof mavlinkKey, err, sizeof err)) {
+    std::snprintf(err + std::strlen(err), sizeof err - std::strlen(err), " (--mavlink-key)");
+    reporter.report(err);
+    return kExitUsage;
   }
   // Before anything opens: opening an output truncates it, and a reader may have it open.
   if (!checkOutputs(opt, err, sizeof err)) {
@@ -234,6 +243,11 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     mc.mount.yawDeg = opt.mountDeg[2];
     for (int i = 0; i < 3; ++i) mc.mount.offsetM[i] = opt.mountOffsetM[i];
     mc.landingPosition = opt.landingPosition;
+    if (opt.mavlinkKey) {  // read before the run: errors said at once
+      mc.signing = true;
+      mc.signingTimestamp = platform::signingTimestampNow();
+    }
+    std::memcpy(mc.key.bytes, mavlinkKey, sizeof mc.key.bytes);
     mc.acceptSysIdCount = opt.acceptSysIdCount;
     for (int i = 0; i < opt.acceptSysIdCount; ++i)
       mc.acceptSysIds[i] = static_cast<uint8_t>(opt.acceptSysIds[i]);

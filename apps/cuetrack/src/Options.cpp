@@ -131,9 +131,11 @@ const char* usageText() {
          "  --mavlink-udp HOST:PORT\n"
          "                     MAVLink over UDP to HOST:PORT (a MAVLink router on a companion\n"
          "                     computer) instead of --serial; commands from that peer only\n"
-         "                     MAVLink here is unsigned and unauthenticated: the link trusts its\n"
-         "                     network (anyone who can send to it, or forge a system id, can\n"
-         "                     command it; docs/mavlink.md)\n"
+         "  --mavlink-key FILE MAVLink 2 signing with the 32-byte key in FILE (chmod 600): our\n"
+         "                     messages signed; unsigned, badly signed or replayed commands\n"
+         "                     refused and counted. Without it the link is unauthenticated: it\n"
+         "                     trusts its network (anyone who can send to it, or forge a\n"
+         "                     system id, can command it; docs/mavlink.md)\n"
          "  --mavlink-accept-sysid N[,N...]\n"
          "                     obey commands only from these MAVLink system ids (the\n"
          "                     autopilot's, the ground station's); others are refused and\n"
@@ -271,6 +273,10 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
                       v, AppOptions::kMaxAcceptSysIds);
         return ParseResult::Error;
       }
+      if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
+    } else if (std::strcmp(a, "--mavlink-key") == 0) {
+      if (!value(&v)) return ParseResult::Error;
+      out->mavlinkKey = v;
       if (!out->mavlinkOnlyOption) out->mavlinkOnlyOption = a;
     } else if (std::strcmp(a, "--mavlink-mount") == 0) {
       if (!value(&v)) return ParseResult::Error;

@@ -44,6 +44,7 @@ struct AppOptions {
   static constexpr int kMaxAcceptSysIds = 8;
   int acceptSysIds[kMaxAcceptSysIds] = {};  // --mavlink-accept-sysid: commands only from these
   int acceptSysIdCount = 0;                 // 0: from any system
+  const char* mavlinkKey = nullptr;         // --mavlink-key FILE: MAVLink 2 signing
   bool landingPosition = true;              // --mavlink-landing frd (else angles)
   const char* mavlinkOnlyOption = nullptr;  // the first --mavlink-* option given
   bool show = false;                        // --show: live window (View.hpp, host only)

@@ -41,7 +41,8 @@ uint16_t crc16(const uint8_t* data, size_t n, uint16_t crc) {
   return crc;
 }
 
-size_t encodeFrame(const Header& h, const uint8_t* payload, size_t len, uint8_t* out, size_t cap) {
+size_t encodeFrame(const Header& h, const uint8_t* payload, size_t len, uint8_t* out, size_t cap,
+                   uint8_t incompatFlags) {
   const MessageInfo* info = messageInfo(h.msgId);
   if (info == nullptr || len > info->payloadBytes) return 0;
   while (len > 1 && payload[len - 1] == 0) --len;  // MAVLink 2 payload truncation
@@ -50,7 +51,7 @@ size_t encodeFrame(const Header& h, const uint8_t* payload, size_t len, uint8_t*
   if (cap < total) return 0;
   out[0] = kStx;
   out[1] = static_cast<uint8_t>(len);
-  out[2] = 0;  // incompat flags: unsigned
+  out[2] = incompatFlags;
   out[3] = 0;  // compat flags
   out[4] = h.seq;
   out[5] = h.sysId;
@@ -95,9 +96,15 @@ void copyMessage(const uint8_t* buf, Message* out) {
   out->header.compId = buf[6];
   out->header.msgId = msgIdOf(buf);
   out->incompatFlags = buf[2];
+  out->compatFlags = buf[3];
   out->len = buf[1];
   std::memset(out->payload, 0, sizeof out->payload);
   std::memcpy(out->payload, buf + kHeaderBytes, out->len);
+  out->crc =
+      static_cast<uint16_t>(buf[kHeaderBytes + out->len] | (buf[kHeaderBytes + out->len + 1] << 8));
+  std::memset(out->signature, 0, sizeof out->signature);
+  if ((buf[2] & kIncompatSigned) != 0)
+    std::memcpy(out->signature, buf + kHeaderBytes + out->len + kCrcBytes, kSignatureBytes);
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ bool MavlinkLink::Interval::due(uint64_t nowUs) {
 
 MavlinkLink::MavlinkLink(ByteStream& port, const Clock& clock, Reporter& reporter,
                          const LinkConfig& config)
-    : _port(port, clock, reporter), _clock(clock), _config(config) {
+    : _port(port, clock, reporter), _clock(clock), _config(config), _signatures(config.key) {
   _startUs = _clock.nowUs();
 }
 
@@ -50,8 +50,21 @@ bool MavlinkLink::transmit(uint32_t msgId, const uint8_t* payload, size_t len) {
   h.compId = _config.compId;
   h.msgId = msgId;
   uint8_t wire[kMaxFrameBytes];
-  const size_t n = encodeFrame(h, payload, len, wire, sizeof wire);
+  const size_t n = _config.signing ? encodeSignedFrame(h, payload, len, _config.key, _config.linkId,
+                                                       nextSigningTimestamp(), wire, sizeof wire)
+                                   : encodeFrame(h, payload, len, wire, sizeof wire);
   return n > 0 && _port.send(wire, n);
+}
+
+// The wall clock's time as the link's clock moves it on, never behind what we signed or
+// saw last (the spec's rule for a system whose clock is not set).
+uint64_t MavlinkLink::nextSigningTimestamp() {
+  uint64_t t = _config.signingTimestamp + (_clock.nowUs() - _startUs) / 10;
+  if (t <= _lastSignedTimestamp) t = _lastSignedTimestamp + 1;
+  if (t <= _signatures.newest()) t = _signatures.newest() + 1;
+  _lastSignedTimestamp = t;
+  _signatures.noteTimestamp(t);
+  return t;
 }
 
 void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
@@ -146,6 +159,11 @@ void MavlinkLink::handle(const Message& m, LinkControl& control) {
   const Addressing to = isLong ? addressing(c.targetSystem, c.targetComponent)
                                : addressing(ci.targetSystem, ci.targetComponent);
   if (to == Addressing::NotOurs) return;
+  // With a key: unsigned, badly signed and replayed commands are not obeyed, not answered.
+  if (_config.signing && _signatures.check(m) != SignatureCheck::Good) {
+    ++_port.stats().rxRefused;
+    return;
+  }
   if (!accepted(m.header.sysId)) {  // a stranger: no answer, it learns nothing
     ++_port.stats().rxRefused;
     return;

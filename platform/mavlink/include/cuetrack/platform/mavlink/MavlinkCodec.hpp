@@ -53,13 +53,18 @@ struct Header {
 // One unsigned MAVLink 2 frame into out. The payload's trailing zero bytes are cut (as
 // MAVLink 2 requires senders to; at least one byte stays). Returns the frame's size, or 0
 // when msgId is unknown, len exceeds the message's payload, or cap is too small.
-size_t encodeFrame(const Header& h, const uint8_t* payload, size_t len, uint8_t* out, size_t cap);
+// incompatFlags: kIncompatSigned for a frame a signature block will follow (Signing.hpp).
+size_t encodeFrame(const Header& h, const uint8_t* payload, size_t len, uint8_t* out, size_t cap,
+                   uint8_t incompatFlags = 0);
 
 struct Message {
   Header header{};
   uint8_t incompatFlags = 0;
-  uint8_t len = 0;                      // as sent (maybe truncated)
-  uint8_t payload[kMaxPayloadBytes]{};  // zero past len: truncated fields read as 0
+  uint8_t compatFlags = 0;
+  uint8_t len = 0;                       // as sent (maybe truncated)
+  uint8_t payload[kMaxPayloadBytes]{};   // zero past len: truncated fields read as 0
+  uint16_t crc = 0;                      // as sent
+  uint8_t signature[kSignatureBytes]{};  // signed frames: link id, timestamp, signature
 };
 
 struct ParserStats {

@@ -25,6 +25,7 @@
 #include "cuetrack/platform/mavlink/CameraMount.hpp"
 #include "cuetrack/platform/mavlink/MavlinkCodec.hpp"
 #include "cuetrack/platform/mavlink/MavlinkMessages.hpp"
+#include "cuetrack/platform/mavlink/Signing.hpp"
 
 namespace cuetrack::platform::mavlink {
 
@@ -36,6 +37,14 @@ struct LinkConfig {
   // none given: from any.
   uint8_t acceptSysIds[kMaxAcceptedSysIds]{};
   int acceptSysIdCount = 0;
+  // MAVLink 2 signing (--mavlink-key): our messages signed with this link id; commands
+  // obeyed only when signed with the key, and newer than their stream's last (replays).
+  bool signing = false;
+  SigningKey key{};
+  uint8_t linkId = 0;
+  // The signing timestamp at construction (10 us units since 2015-01-01, from the wall
+  // clock; 0 when it is not known): then moved on by the link's clock.
+  uint64_t signingTimestamp = 0;
   CameraMount mount{};
   // LANDING_TARGET with x, y, z in MAV_FRAME_BODY_FRD (ArduPilot); false: angles and
   // distance only, position_valid 0 (PX4 reads only that, as an IRLock-style report).
@@ -102,10 +111,14 @@ class MavlinkLink final : public TrackLink {
   void sendStatus(const FrameReport& r);
   void sendLandingTarget(const FrameReport& r);
 
+  uint64_t nextSigningTimestamp();
+
   QueuedPort _port;
   const Clock& _clock;
   LinkConfig _config;
   Parser _parser;
+  SignatureChecker _signatures;
+  uint64_t _lastSignedTimestamp{0};
   uint8_t _rx[kRxBufferBytes]{};
   uint8_t _seq{0};
   bool _heartbeatSent{false};
