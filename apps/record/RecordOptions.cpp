@@ -1,4 +1,5 @@
 #include "RecordOptions.hpp"
+#include "cuetrack/platform/DecimalText.hpp"
 #include "cuetrack/platform/OptionOnce.hpp"
 
 #include <cerrno>
@@ -10,7 +11,7 @@ namespace cuetrack::record {
 namespace {
 
 bool parseInt(const char* s, long lo, long hi, long* out) {
-  if (!s || !*s) return false;
+  if (!s || !cuetrack::platform::plainDecimal(s, false)) return false;
   char* end = nullptr;
   errno = 0;
   const long v = std::strtol(s, &end, 10);
@@ -20,7 +21,7 @@ bool parseInt(const char* s, long lo, long hi, long* out) {
 }
 
 bool parseDouble(const char* s, double lo, double hi, double* out) {
-  if (!s || !*s) return false;
+  if (!s || !cuetrack::platform::plainDecimal(s, true)) return false;  // no hex, no 1e3
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(s, &end);

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "cuetrack/platform/DecimalText.hpp"
 #include "cuetrack/platform/HostPort.hpp"
 #include "cuetrack/platform/OptionOnce.hpp"
 
@@ -16,9 +17,7 @@ namespace {
 constexpr float kMaxBoxPx = 100000.f;  // far beyond any sensor; catches 1e30 and typos
 
 bool parseLong(const char* s, long lo, long hi, long* out) {
-  // Digits only (an optional sign): strtol would also skip leading blanks.
-  const char* d = (*s == '-' || *s == '+') ? s + 1 : s;
-  if (*d < '0' || *d > '9') return false;
+  if (!platform::plainDecimal(s, false)) return false;
   char* end = nullptr;
   errno = 0;
   const long v = std::strtol(s, &end, 10);
@@ -27,23 +26,10 @@ bool parseLong(const char* s, long lo, long hi, long* out) {
   return true;
 }
 
-// Numbers on the command line are plain decimals, the same rule as --frames: "12", "-0.5",
-// ".5". strtof alone would also read hex ("0x123" as 291), exponents, inf and nan.
-bool plainDecimal(const char* s) {
-  if (*s == '+' || *s == '-') ++s;
-  int digits = 0;
-  while (*s >= '0' && *s <= '9') ++s, ++digits;
-  if (*s == '.') {
-    ++s;
-    while (*s >= '0' && *s <= '9') ++s, ++digits;
-  }
-  return digits > 0 && (*s == '\0' || *s == ',');
-}
-
 // n finite numbers "A,B,...", each within +-limit.
 bool parseFloats(const char* s, int n, float limit, float* out) {
   for (int i = 0; i < n; ++i) {
-    if (!plainDecimal(s)) return false;
+    if (!platform::plainDecimal(s, true, ',')) return false;
     char* end = nullptr;
     out[i] = std::strtof(s, &end);
     // inf, nan and absurd values would reach the tracker as something it "tracks".
