@@ -72,6 +72,12 @@ TEST_CASE("a bad command line is exit code 2") {
   CHECK(parse({"--frames", "0"}).rc == cli::kExitUsage);
   CHECK(parse({"--frames", "abc"}).rc == cli::kExitUsage);
   CHECK(parse({"--box", "1,1,inf,20"}).rc == cli::kExitUsage);
+  // Numbers are plain decimals (CLI11's own parsing would take 0x10, 0b1, 1e2).
+  for (const char* bad : {"0x10", "0o7", "0b1", "1e2", " 5", "+5"}) {
+    INFO(bad);
+    CHECK(parse({"--frames", bad}).rc == cli::kExitUsage);
+  }
+  CHECK(parse({"--box", "0x1,1,10,10"}).rc == cli::kExitUsage);
   CHECK(parse({"--hash", "--frames", "5"}).rc == -1);
 }
 
@@ -109,7 +115,13 @@ TEST_CASE("whole numbers: decimal digits only, within range") {
   double d = 0;
   CHECK(cli::decimal("-2.5", -27, 27, &d).empty());
   CHECK(d == -2.5);
-  for (const char* bad : {"", "28", "1x", "nan", "inf", "-27.5"}) {
+  for (const char* good : {".5", "1.", "+2", "-0"}) {
+    INFO(good);
+    CHECK(cli::decimal(good, -27, 27, &d).empty());
+  }
+  // Plain decimals only: strtod would also read blanks, hex, exponents, inf and nan.
+  for (const char* bad : {"", "28", "1x", "nan", "inf", "-27.5", "0x10", "0x1p3", "1e1", " 5", "5 ",
+                          "-", ".", "1.2.3"}) {
     INFO(bad);
     CHECK_FALSE(cli::decimal(bad, -27, 27, &d).empty());
   }
@@ -126,10 +138,17 @@ TEST_CASE("boxes, sizes, baud rates, HOST:PORT, choices") {
   CHECK(cli::box("10.5,20,30,40", &b).empty());
   CHECK(b.x == 10.5f);
   for (const char* bad : {"1,1,inf,20", "nan,1,10,10", "1,1,1e30,1e30", "1,2,3", "1,2,3,4,5",
-                          "1,2,0,4", "1,2,3,-4", "1;2;3;4"}) {
+                          "1,2,0,4", "1,2,3,-4", "1;2;3;4", "0x123,1,10,10", "1,1,1e2,10",
+                          "1, 1,10,10", "1,,10,10", "1,1,10,10,", "-,1,10,10"}) {
     INFO(bad);
     CHECK_FALSE(cli::box(bad, &b).empty());
   }
+  CHECK(cli::box("1.,.5,+10,10", &b).empty());
+  CHECK(b.y == 0.5f);
+  float three[3];
+  CHECK(cli::numbers("-90,0.5,+1", 3, 360.f, three).empty());
+  CHECK_FALSE(cli::numbers("0x10,0,0", 3, 360.f, three).empty());
+  CHECK_FALSE(cli::numbers("0,1e2,0", 3, 360.f, three).empty());
   int w = 0, h = 0;
   CHECK(cli::imageSize("320x240", 8, 640, 480, &w, &h).empty());
   CHECK((w == 320 && h == 240));

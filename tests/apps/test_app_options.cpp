@@ -144,8 +144,11 @@ TEST_CASE("--source kinect:MODE takes both or colour; depth alone is refused, na
 TEST_CASE("--box: non-finite and absurd values are refused at parsing, sane ones kept") {
   AppOptions o;
   std::string err;
-  for (const char* box : {"1,1,inf,20", "1,1,1e30,1e30", "nan,1,10,10", "1,-inf,10,10",
-                          "1,1,10,nan", "200000,1,10,10", "1,1,100001,10"}) {
+  // Plain decimals only, as for --frames: hex, exponents and blanks are refused.
+  for (const char* box :
+       {"1,1,inf,20", "1,1,1e30,1e30", "nan,1,10,10", "1,-inf,10,10", "1,1,10,nan",
+        "200000,1,10,10", "1,1,100001,10", "0x123,1,10,10", "1,1,1e2,10", "1, 1,10,10", "1,,10,10",
+        "1,1,10,10,", "-,1,10,10", "1.,.5,10,10x"}) {
     INFO(box);
     CHECK(parse({"--box", box}, &o, &err) == ParseResult::Error);
     CHECK(err.find(std::string("--box ") + box + ": expected X,Y,W,H") == 0);
@@ -153,6 +156,8 @@ TEST_CASE("--box: non-finite and absurd values are refused at parsing, sane ones
   REQUIRE(parse({"--box", "-5,-6,100000,7.5"}, &o, &err) == ParseResult::Run);
   CHECK(o.box.x == -5.f);
   CHECK(o.box.w == 100000.f);
+  REQUIRE(parse({"--box", "1.,.5,+10,10"}, &o, &err) == ParseResult::Run);
+  CHECK(o.box.y == 0.5f);
 }
 
 TEST_CASE("--seed takes plain digits only; --baud says unsupported for a number it cannot use") {
@@ -163,6 +168,10 @@ TEST_CASE("--seed takes plain digits only; --baud says unsupported for a number 
   CHECK(parse({"--seed", " 5"}, &o, &err) == ParseResult::Error);
   CHECK(parse({"--seed", "+5"}, &o, &err) == ParseResult::Error);
   CHECK(parse({"--seed", "0x10"}, &o, &err) == ParseResult::Error);
+  for (const char* frames : {"0x10", "1e3", " 5", "5 "}) {
+    INFO(frames);
+    CHECK(parse({"--frames", frames}, &o, &err) == ParseResult::Error);
+  }
   CHECK(parse({"--seed", "99999999999999999999999"}, &o, &err) == ParseResult::Error);
   REQUIRE(parse({"--seed", "18446744073709551615"}, &o, &err) == ParseResult::Run);
   CHECK(o.seed == 18446744073709551615ull);
@@ -197,6 +206,16 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
   REQUIRE(parse({"--protocol", "mavlink", "--mavlink-udp", "127.0.0.1:14550"}, &o, &err) ==
           ParseResult::Run);
   CHECK(std::string(o.mavlinkUdp) == "127.0.0.1:14550");
+  REQUIRE(parse({"--serial", "x", "--protocol", "mavlink", "--mavlink-key", "k.bin"}, &o, &err) ==
+          ParseResult::Run);
+  CHECK(std::string(o.mavlinkKey) == "k.bin");
+  CHECK(o.acceptSysIdCount == 0);  // from any system
+  REQUIRE(parse({"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "1,255"}, &o,
+                &err) == ParseResult::Run);
+  CHECK(o.mavlinkKey == nullptr);  // unsigned unless a key is given
+  REQUIRE(o.acceptSysIdCount == 2);
+  CHECK(o.acceptSysIds[0] == 1);
+  CHECK(o.acceptSysIds[1] == 255);
   const struct {
     std::initializer_list<const char*> args;
     const char* says;
@@ -222,6 +241,28 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
       {{"--serial", "x", "--protocol", "mavlink", "--mavlink-landing", "ned"},
        "--mavlink-landing ned: expected frd or angles"},
       {{"--serial", "x", "--mavlink-landing", "angles"}, "--mavlink-landing needs --protocol"},
+      {{"--serial", "x", "--mavlink-accept-sysid", "1"}, "--mavlink-accept-sysid needs --protocol"},
+      {{"--serial", "x", "--mavlink-key", "k"}, "--mavlink-key needs --protocol"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "0"},
+       "--mavlink-accept-sysid 0: expected system ids 1..255"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "1,,2"},
+       "--mavlink-accept-sysid 1,,2:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "0x10"},
+       "--mavlink-accept-sysid 0x10:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "1,2,3,4,5,6,7,8,9"},
+       "--mavlink-accept-sysid 1,2,3,4,5,6,7,8,9:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "1,"},
+       "--mavlink-accept-sysid 1,:"},
+      // Plain decimals in every number (the command-line layer's checks, apps/common).
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-mount", "0x1,0,0"},
+       "--mavlink-mount 0x1,0,0: expected ROLL,PITCH,YAW"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-offset", "0,1e1,0"},
+       "--mavlink-offset 0,1e1,0:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-sysid", "0x10"},
+       "--mavlink-sysid 0x10:"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "1", "--mavlink-key",
+        "k", "--mavlink-accept-sysid=2"},
+       "--mavlink-accept-sysid given twice"},
   };
   for (const auto& b : bad) {
     INFO(b.says);

@@ -14,6 +14,7 @@
 #include <poll.h>
 #include <signal.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -28,6 +29,7 @@
 #include "Skip.hpp"
 #include "TempDir.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
+#include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
 #include "cuetrack/platform/mavlink/MavlinkMessages.hpp"
 #ifdef CUETRACK_HAVE_MAVLINK_C
@@ -384,9 +386,101 @@ TEST_CASE("--mavlink-udp: the same messages to a loopback peer, commands answere
   for (const auto& d : got)
     accepted += ackOf(d, kCmdCameraTrackRectangle) && d.ackResult == kResultAccepted;
   CHECK(accepted == 1);
+
+  // Noise (a cut header), then 200 commands in one datagram framed by the official
+  // library: the noise reaches no further than its datagram, every command is answered.
+  const uint8_t cut[] = {kStx, 33, 0, 0, 9, kGcsSys};
+  REQUIRE(::sendto(gcs, cut, sizeof cut, 0, reinterpret_cast<sockaddr*>(&from), fromLen) ==
+          static_cast<ssize_t>(sizeof cut));
+  std::vector<uint8_t> many;
+  for (int i = 0; i < 200; ++i) {
+    const float none[7] = {0, 0, 0, 0, 0, 0, 0};
+    const size_t k = official::encodeCommandLong(
+        kGcsSys, kGcsComp, 1, 100, static_cast<uint16_t>(40000 + i), none, w, sizeof w);
+    many.insert(many.end(), w, w + k);
+  }
+  REQUIRE(::sendto(gcs, many.data(), many.size(), 0, reinterpret_cast<sockaddr*>(&from), fromLen) ==
+          static_cast<ssize_t>(many.size()));
+  REQUIRE(until([](const official::Decoded& d) { return ackOf(d, 40000 + 199); }));
+  int answered = 0;
+  for (const auto& d : got)
+    answered += d.msgId == kMsgCommandAck && d.ackCommand >= 40000 && d.ackCommand < 40200 &&
+                d.ackResult == kResultUnsupported;
+  CHECK(answered == 200);
   app.signal(SIGTERM);
   int exitStatus = -1;
   REQUIRE(app.wait(30000, &exitStatus));
   CHECK(exitStatus == 0);
+  // Even --quiet names the link's losses, by its own name.
+  const std::string err = readText(appErr);
+  CHECK(err.find("udp sent ") != std::string::npos);
+  CHECK(err.find(" rx-errors 1 ") != std::string::npos);
+  CHECK(err.find("serial") == std::string::npos);
+}
+
+TEST_CASE("--mavlink-key: signed both ways over UDP; unsigned commands refused; bad keys exit 2") {
+  TempDir tmp;
+  const std::string keyPath = tmp / "key", appErr = tmp / "app.err";
+  uint8_t key[32];
+  for (int i = 0; i < 32; ++i) key[i] = static_cast<uint8_t>(0xA5 ^ i);
+  writeText(keyPath, std::string(reinterpret_cast<const char*>(key), 32));
+  // A key others can read, or of another size: refused before the run, naming the file.
+  REQUIRE(::chmod(keyPath.c_str(), 0644) == 0);
+  LoopbackUdp gcsSocket;
+  const char* base[] = {CUETRACK_APP_BIN, "--protocol",    "mavlink",       "--mavlink-udp",
+                        gcsSocket.target, "--mavlink-key", keyPath.c_str(), "--no-gt",
+                        "--quiet",        "--frames",      "100000",        nullptr};
+  {
+    ChildProcess app;
+    REQUIRE(app.start(base, nullptr, appErr.c_str()));
+    int status = -1;
+    REQUIRE(app.wait(kAppTimeoutMs, &status));
+    CHECK(status == 2);
+    CHECK(readText(appErr).find(keyPath + ": the key is open to group or others (mode 644)") !=
+          std::string::npos);
+  }
+  REQUIRE(::chmod(keyPath.c_str(), 0600) == 0);
+  ChildProcess app;
+  REQUIRE(app.start(base, nullptr, appErr.c_str()));
+  const int gcs = gcsSocket.fd;
+  sockaddr_in from{};
+  socklen_t fromLen = sizeof from;
+  int acks = 0, unsignedFrames = 0, frames = 0;
+  auto until = [&](int wantAcks) {
+    return waitFor(
+        [&] {
+          uint8_t buf[600];
+          pollfd p{gcs, POLLIN, 0};
+          if (::poll(&p, 1, 10) <= 0) return false;
+          fromLen = sizeof from;
+          const ssize_t n =
+              ::recvfrom(gcs, buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&from), &fromLen);
+          if (n <= 0) return false;
+          ++frames;
+          unsignedFrames += !official::verifiesSigned(buf, static_cast<size_t>(n), key);
+          acks += buf[7] == kMsgCommandAck && buf[8] == 0 && buf[9] == 0;
+          return acks >= wantAcks;
+        },
+        30000);
+  };
+  REQUIRE(until(0));  // a first datagram: the address to answer
+  const float none[7] = {0, 0, 0, 0, 0, 0, 0};
+  uint8_t w[300];
+  // Unsigned: refused, no answer. Then signed by the official library: answered.
+  size_t n = official::encodeCommandLong(kGcsSys, kGcsComp, 1, 100, 40000, none, w, sizeof w);
+  REQUIRE(::sendto(gcs, w, n, 0, reinterpret_cast<sockaddr*>(&from), fromLen) ==
+          static_cast<ssize_t>(n));
+  n = official::encodeSignedCommandLong(kGcsSys, kGcsComp, 1, 100, 40001, none, key, 0,
+                                        platform::signingTimestampNow(), w, sizeof w);
+  REQUIRE(::sendto(gcs, w, n, 0, reinterpret_cast<sockaddr*>(&from), fromLen) ==
+          static_cast<ssize_t>(n));
+  REQUIRE(until(1));
+  CHECK(acks == 1);
+  CHECK(unsignedFrames == 0);  // everything cuetrack sent is signed with the key
+  app.signal(SIGTERM);
+  int status = -1;
+  REQUIRE(app.wait(30000, &status));
+  CHECK(status == 0);
+  CHECK(readText(appErr).find(" refused 1") != std::string::npos);
 }
 #endif

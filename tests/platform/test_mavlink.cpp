@@ -3,14 +3,18 @@
 // MavlinkLink's behaviour over an in-memory cable with a fake clock.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "cuetrack/platform/fake/FakeClock.hpp"
 #include "cuetrack/platform/fake/FakeSerial.hpp"
 #include "cuetrack/platform/fake/MemoryReporter.hpp"
 #include "cuetrack/platform/mavlink/MavlinkLink.hpp"
+#include "cuetrack/platform/mavlink/Sha256.hpp"
 
 using namespace cuetrack;
 using namespace cuetrack::platform;
@@ -199,6 +203,63 @@ TEST_CASE("a signed frame is read (its signature skipped)") {
   Parser parser;
   CHECK(parseAll(w, parser).size() == 1);
   CHECK(parser.stats().badCrc == 0);
+}
+
+TEST_CASE("SHA-256: the FIPS 180-4 examples, whole and in pieces") {
+  auto hex = [](const std::string& text, size_t piece) {
+    Sha256 sha;
+    const auto* p = reinterpret_cast<const uint8_t*>(text.data());
+    for (size_t at = 0; at < text.size(); at += piece)
+      sha.update(p + at, std::min(piece, text.size() - at));
+    uint8_t d[32];
+    sha.final(d);
+    char out[65];
+    for (int i = 0; i < 32; ++i) std::snprintf(out + 2 * i, 3, "%02x", d[i]);
+    return std::string(out);
+  };
+  CHECK(hex("", 1) == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  CHECK(hex("abc", 1) == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  const std::string two = "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";  // 2 blocks
+  for (size_t piece : {1u, 7u, 64u, 100u})
+    CHECK(hex(two, piece) == "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+}
+
+TEST_CASE("signing: our signed frame checks with the key, not without; replays refused") {
+  SigningKey key;
+  for (int i = 0; i < 32; ++i) key.bytes[i] = static_cast<uint8_t>(i);
+  CommandLong c;
+  c.command = kCmdCameraStopTracking;
+  c.targetSystem = 1;
+  c.targetComponent = 100;
+  uint8_t p[40];
+  const size_t len = pack(c, p);
+  Header h;
+  h.sysId = 255;
+  h.compId = 190;
+  h.msgId = kMsgCommandLong;
+  uint8_t w[kMaxFrameBytes];
+  const size_t n = encodeSignedFrame(h, p, len, key, 2, 123456789, w, sizeof w);
+  REQUIRE(n == kHeaderBytes + w[1] + kCrcBytes + kSignatureBytes);
+  Parser parser;
+  auto parse = [&](const uint8_t* f, size_t k) {
+    size_t at = 0;
+    Message m;
+    REQUIRE(parser.nextInDatagram(f, k, &at, &m));
+    return m;
+  };
+  SignatureChecker checker(key);
+  CHECK(checker.check(parse(w, n)) == SignatureCheck::Good);
+  CHECK(checker.check(parse(w, n)) == SignatureCheck::Replayed);
+  SigningKey other;
+  SignatureChecker stranger(other);
+  CHECK(stranger.check(parse(w, n)) == SignatureCheck::BadSignature);
+  uint8_t plain[kMaxFrameBytes];
+  const size_t k = encodeFrame(h, p, len, plain, sizeof plain);
+  CHECK(checker.check(parse(plain, k)) == SignatureCheck::Unsigned);
+  // A new stream a minute older than the newest timestamp known: refused.
+  SignatureChecker fresh(key);
+  fresh.noteTimestamp(123456789 + kSigningNewStreamSlack + 1);
+  CHECK(fresh.check(parse(w, n)) == SignatureCheck::TooOld);
 }
 
 TEST_CASE("camera mount: forward by default, pitch -90 looks down, offset added") {
@@ -424,6 +485,91 @@ TEST_CASE("MavlinkLink: track commands are acknowledged once, after the tracker'
   rig.poll();
   CHECK(rig.acks(rig.read()).empty());
   CHECK(rig.control.resets == 1);
+}
+
+TEST_CASE("MavlinkLink: only accepted senders are obeyed; strangers are refused and counted") {
+  LinkConfig config;
+  config.acceptSysIds[0] = 1;    // the autopilot
+  config.acceptSysIds[1] = 255;  // the ground station
+  config.acceptSysIdCount = 2;
+  FakeClock clock{5000};
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  static MavlinkLink link{cable.a(), clock, reporter, config};  // 64 KiB: static
+  Control control;
+  Parser host;
+  auto sendFrom = [&](uint8_t sys, const std::vector<uint8_t>& frame) {
+    auto w = frame;
+    w[5] = sys;  // the sender's system id, then the CRC again
+    const uint16_t crc = crcAccumulate(messageInfo(kMsgCommandLong)->crcExtra,
+                                       crc16(w.data() + 1, kHeaderBytes - 1 + w[1]));
+    w[kHeaderBytes + w[1]] = static_cast<uint8_t>(crc);
+    w[kHeaderBytes + w[1] + 1] = static_cast<uint8_t>(crc >> 8);
+    REQUIRE(cable.b().write(w.data(), w.size()).bytes == w.size());
+  };
+  auto acks = [&] {
+    std::vector<CommandAck> out;
+    uint8_t buf[512];
+    for (IoResult r; (r = cable.b().read(buf, sizeof buf, 0)).bytes > 0;) {
+      Message m;
+      for (size_t i = 0; i < r.bytes; ++i)
+        if (host.push(buf[i], &m) && m.header.msgId == kMsgCommandAck)
+          out.push_back(unpackCommandAck(m.payload));
+    }
+    return out;
+  };
+  const auto track = commandFrame(kCmdCameraTrackRectangle, {0.1f, 0.1f, 0.2f, 0.2f});
+  const auto stop = commandFrame(kCmdCameraStopTracking, {0});
+  sendFrom(7, track);  // a stranger on the network
+  sendFrom(7, stop);
+  link.poll(control, LinkStatus{});
+  CHECK(acks().empty());  // no answer: it learns nothing
+  CHECK(control.starts.empty());
+  CHECK(control.resets == 0);
+  CHECK(link.stats().rxRefused == 2);
+  sendFrom(255, stop);  // the ground station
+  sendFrom(1, stop);    // the autopilot
+  link.poll(control, LinkStatus{});
+  const auto got = acks();
+  REQUIRE(got.size() == 2);
+  CHECK(got[0].result == kResultAccepted);
+  CHECK(control.resets == 2);
+  CHECK(link.stats().rxRefused == 2);
+}
+
+TEST_CASE("MavlinkLink: broadcasts obeyed only where the camera protocol allows them") {
+  static LinkRig rig;
+  // Component 0 (every component of system 1), and system 0 (every system).
+  rig.send(commandFrame(kCmdRequestMessage, {259}, 1, 0));      // discovery: answered
+  rig.send(commandFrame(kCmdCameraStopTracking, {0}, 0, 100));  // camera id 0: obeyed
+  rig.send(commandFrame(kCmdCameraTrackRectangle, {0.1f, 0.1f, 0.2f, 0.2f, 0.f}, 1, 0));
+  rig.poll();
+  auto acks = rig.acks(rig.read());
+  REQUIRE(acks.size() == 2);  // the rectangle waits for the tracker
+  CHECK(acks[0].command == kCmdRequestMessage);
+  CHECK(acks[0].result == kResultAccepted);
+  CHECK(acks[1].result == kResultAccepted);
+  CHECK(rig.control.resets == 1);
+  CHECK(rig.control.starts.size() == 1);
+  rig.link.answerStart(rig.control.starts[0].token, StartOutcome::Started);
+  rig.read();
+  // A broadcast must name camera 0: NaN (not given) or our id is DENIED, as the camera
+  // protocol says; a broadcast interval change is refused without an answer; someone
+  // else's broadcast (an autopilot's mission camera command) is not ours at all.
+  rig.send(commandFrame(kCmdCameraStopTracking, {NAN}, 1, 0));
+  rig.send(commandFrame(kCmdCameraTrackPoint, {0.5f, 0.5f, 0.f, 100.f}, 1, 0));
+  rig.send(commandFrame(kCmdSetMessageInterval, {275, 1000000}, 1, 0));
+  rig.send(commandFrame(2000, {0, 1, 0}, 1, 0));  // IMAGE_START_CAPTURE
+  rig.poll();
+  acks = rig.acks(rig.read());
+  REQUIRE(acks.size() == 2);
+  CHECK(acks[0].command == kCmdCameraStopTracking);
+  CHECK(acks[0].result == kResultDenied);
+  CHECK(acks[1].command == kCmdCameraTrackPoint);
+  CHECK(acks[1].result == kResultDenied);
+  CHECK(rig.control.resets == 1);
+  CHECK(rig.control.starts.size() == 1);
+  CHECK(rig.link.stats().rxRefused == 3);
 }
 
 TEST_CASE("MavlinkLink: CAMERA_INFORMATION on request, message intervals, bad bytes counted") {

@@ -211,4 +211,72 @@ TEST_CASE("the worked examples of docs/mavlink.md decode with the official libra
   CHECK(std::memcmp(buf, heartbeat, sizeof heartbeat) == 0);
   CHECK(std::memcmp(buf + sizeof heartbeat, status, sizeof status) == 0);
 }
+
+TEST_CASE("MAVLink 2 signing: the library's signed commands obeyed with the key; ours verify") {
+  uint8_t key[32];
+  for (int i = 0; i < 32; ++i) key[i] = static_cast<uint8_t>(7 * i + 1);
+  LinkConfig config;
+  config.signing = true;
+  std::memcpy(config.key.bytes, key, 32);
+  config.linkId = 3;
+  config.signingTimestamp = 300000000000ull;  // about 2016
+  FakeClock clock{5000};
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  static MavlinkLink link{cable.a(), clock, reporter, config};  // 64 KiB: static
+  Control control;
+  Parser host;
+  std::vector<std::vector<uint8_t> > frames;  // what the link sent, frame by frame
+  auto exchange = [&](const std::vector<uint8_t>& in) {
+    if (!in.empty()) REQUIRE(cable.b().write(in.data(), in.size()).bytes == in.size());
+    link.poll(control, LinkStatus{});
+    std::vector<uint8_t> out;
+    uint8_t buf[512];
+    for (IoResult r; (r = cable.b().read(buf, sizeof buf, 0)).bytes > 0;)
+      out.insert(out.end(), buf, buf + r.bytes);
+    int acks = 0;
+    size_t at = 0, start = 0;
+    Message m;
+    while (host.nextInDatagram(out.data(), out.size(), &at, &m)) {
+      frames.emplace_back(out.begin() + static_cast<long>(start),
+                          out.begin() + static_cast<long>(at));
+      start = at;
+      acks += m.header.msgId == kMsgCommandAck;
+    }
+    return acks;
+  };
+  const float stop[7] = {0, 0, 0, 0, 0, 0, 0};
+  auto command = [&](const uint8_t* k, uint64_t timestamp) {
+    uint8_t w[300];
+    const size_t n = official::encodeSignedCommandLong(255, 190, 1, 100, kCmdCameraStopTracking,
+                                                       stop, k, 1, timestamp, w, sizeof w);
+    REQUIRE(n > 0);
+    return std::vector<uint8_t>(w, w + n);
+  };
+  exchange({});  // the first heartbeat
+  const auto signedStop = command(key, 300000000100ull);
+  CHECK(exchange(signedStop) == 1);  // the library's signature is good: obeyed
+  CHECK(control.resets == 1);
+  CHECK(exchange(signedStop) == 0);  // the same frame again: a replay
+  uint8_t other[32] = {};
+  CHECK(exchange(command(other, 300000000200ull)) == 0);  // another key
+  auto forged = command(key, 300000000300ull);
+  forged[forged.size() - 1] ^= 1;  // the signature's last byte (outside the CRC)
+  CHECK(exchange(forged) == 0);
+  uint8_t w[300];
+  const size_t n =
+      official::encodeCommandLong(255, 190, 1, 100, kCmdCameraStopTracking, stop, w, sizeof w);
+  CHECK(exchange(std::vector<uint8_t>(w, w + n)) == 0);  // unsigned
+  CHECK(control.resets == 1);
+  CHECK(link.stats().rxRefused == 4);
+  CHECK(exchange(command(key, 300000000400ull)) == 1);  // newer, good: obeyed
+  CHECK(control.resets == 2);
+  // Every frame we sent is signed with the key, as the library checks it.
+  REQUIRE(frames.size() >= 3);
+  for (const auto& f : frames) {
+    CHECK(f[2] == kIncompatSigned);
+    CHECK(official::verifiesSigned(f.data(), f.size(), key));
+    CHECK_FALSE(official::verifiesSigned(f.data(), f.size(), other));
+  }
+}
 #endif

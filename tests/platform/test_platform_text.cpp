@@ -123,9 +123,11 @@ TEST_CASE("command text parses the four commands and refuses anything else") {
   REQUIRE(parseCommandText("stop", 3, &c, err, sizeof err));
   CHECK(c.type == CTP_CMD_STOP);
 
-  const char* bad[] = {
-      "",        "start",     "start:1,2,3", "start:1,2,3,0", "start:1,2,3,4,5", "start:a,b,c,d",
-      "rate:-1", "rate:1001", "rate:",       "resetx",        "stop:1",          "launch"};
+  const char* bad[] = {"", "start", "start:1,2,3", "start:1,2,3,0", "start:1,2,3,4,5",
+                       "start:a,b,c,d", "rate:-1", "rate:1001", "rate:", "resetx", "stop:1",
+                       "launch",
+                       // Plain decimals only, as on every command line: no blanks, no hex.
+                       "start: 1,2,3,4", "start:1,2,3, 4", "rate: 5", "start:0x10,2,3,4"};
   for (const char* b : bad) {
     INFO(b);
     err[0] = '\0';

@@ -2,6 +2,7 @@
 // ways, raw 8-bit bytes untouched, clear errors, peer loss and reopen.
 #include <catch2/catch.hpp>
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -166,14 +167,53 @@ TEST_CASE("a second opener of one port is refused, naming the holder; stale lock
   CHECK(cuetrack::test::fileExists(lock.c_str()));
   second.close();
 
-  SECTION("a lock file held by another live process names its PID") {
-    const long other = static_cast<long>(getppid());  // alive while we run
-    writeLockFile(lock, other);
+  SECTION("a lock file whose process holds the device names its PID") {
+    // Another program with the port open (as minicom would, without flock): a child that
+    // opens it, says so through a pipe, and waits for the pipe to close.
+    int ready[2], done[2];
+    REQUIRE(::pipe(ready) == 0);
+    REQUIRE(::pipe(done) == 0);
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+      ::close(ready[0]);
+      ::close(done[1]);  // else its own write end keeps the pipe open for ever
+      const int fd = ::open(pty.a(), O_RDWR | O_NOCTTY);
+      char c = fd >= 0 ? 'y' : 'n';
+      if (::write(ready[1], &c, 1) != 1) _exit(1);
+      while (::read(done[0], &c, 1) > 0) {
+      }
+      _exit(0);
+    }
+    ::close(ready[1]);
+    ::close(done[0]);
+    char c = 0;
+    REQUIRE(::read(ready[0], &c, 1) == 1);
+    REQUIRE(c == 'y');
+    writeLockFile(lock, static_cast<long>(child));
     SerialPort p(dir.path);
     CHECK_FALSE(p.open(pty.a(), 115200));
     CHECK(std::string(p.error()) == std::string(pty.a()) + ": in use by process " +
-                                        std::to_string(other) + " (lock file " + lock + ")");
+                                        std::to_string(child) + " (lock file " + lock + ")");
     CHECK(cuetrack::test::fileExists(lock.c_str()));  // not ours to remove
+    ::close(done[1]);
+    ::close(ready[0]);
+    int status = 0;
+    REQUIRE(waitpid(child, &status, 0) == child);
+  }
+  SECTION("a lock file naming a live process without the device is stale: replaced, said") {
+    // A planted file naming PID 1, or our parent (alive, but not holding the pty).
+    for (const long planted : {1L, static_cast<long>(getppid())}) {
+      writeLockFile(lock, planted);
+      SerialPort p(dir.path);
+      REQUIRE(p.open(pty.a(), 115200));
+      CHECK(std::string(p.notice())
+                .find(std::string(pty.a()) + ": replaced the stale lock file " + lock +
+                      " (process " + std::to_string(planted)) == 0);
+      REQUIRE(cuetrack::test::readFile(lock.c_str(), text, sizeof text));
+      CHECK(std::strtol(text, nullptr, 10) == static_cast<long>(getpid()));
+      p.close();
+    }
   }
   SECTION("a lock file whose process is gone is stale and replaced") {
     const pid_t child = fork();
@@ -184,6 +224,8 @@ TEST_CASE("a second opener of one port is refused, naming the holder; stale lock
     writeLockFile(lock, static_cast<long>(child));
     SerialPort p(dir.path);
     REQUIRE(p.open(pty.a(), 115200));
+    CHECK(std::string(p.notice()).find("(process " + std::to_string(child) + " is gone)") !=
+          std::string::npos);
     REQUIRE(cuetrack::test::readFile(lock.c_str(), text, sizeof text));
     CHECK(std::strtol(text, nullptr, 10) == static_cast<long>(getpid()));
   }

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "cuetrack/platform/DecimalText.hpp"
 #include "cuetrack/platform/HostPort.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
 
@@ -17,8 +18,8 @@ std::string wholeNumber(const std::string& text, long lo, long hi, long* out) {
   const std::string want =
       "expected a whole number in " + std::to_string(lo) + ".." + std::to_string(hi);
   const char* s = text.c_str();
-  const char* digits = s[0] == '-' ? s + 1 : s;
-  if (*digits < '0' || *digits > '9') return want;  // no sign but '-', no space, no "+1"
+  // A plain decimal without a fraction; no sign but '-' ("+1" is refused).
+  if (s[0] == '+' || !platform::plainDecimal(s, false)) return want;
   char* end = nullptr;
   errno = 0;
   const long v = std::strtol(s, &end, 10);
@@ -28,10 +29,12 @@ std::string wholeNumber(const std::string& text, long lo, long hi, long* out) {
 }
 
 std::string decimal(const std::string& text, double lo, double hi, double* out) {
+  // strtod alone would also read blanks, hex ("0x10"), exponents ("1e3"), inf and nan.
+  const bool plain = platform::plainDecimal(text.c_str(), true);
   char* end = nullptr;
   errno = 0;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || errno != 0 || *end != '\0' || !(v >= lo && v <= hi))
+  const double v = plain ? std::strtod(text.c_str(), &end) : 0.0;
+  if (!plain || errno != 0 || *end != '\0' || !(v >= lo && v <= hi))
     return "expected a number in " + std::to_string(lo) + ".." + std::to_string(hi);
   *out = v;
   return "";
@@ -67,6 +70,8 @@ std::string numbers(const std::string& text, int n, float limit, float* out) {
   const std::string want = "expected " + std::to_string(n) + " numbers A,B,... each within +-" +
                            std::to_string(static_cast<long>(limit));
   for (int i = 0; i < n; ++i) {
+    // A plain decimal up to the next ',' (strtof would also read "0x123", "1e2", " 1").
+    if (!platform::plainDecimal(s, true, ',')) return want;
     char* end = nullptr;
     out[i] = std::strtof(s, &end);
     // inf, nan and absurd values would reach the tracker as something it "tracks".

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "Options.hpp"
+#include "OutputCheck.hpp"
 #include "PacedSource.hpp"
 #include "Pipeline.hpp"
 #include "PrefetchedSource.hpp"
@@ -16,6 +17,7 @@
 #include "WaitingSource.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
+#include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
@@ -59,6 +61,19 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       return kExitUsage;
     case ParseResult::Run:
       break;
+  }
+  // The signing key, before anything runs: a key others can read is refused (exit 2).
+  static uint8_t mavlinkKey[32];
+  if (opt.mavlinkKey &&
+      !platform::readKeyFile(opt.mavlinkKey, mavlinkKey, sizeof mavlinkKey, err, sizeof err)) {
+    std::snprintf(err + std::strlen(err), sizeof err - std::strlen(err), " (--mavlink-key)");
+    reporter.report(err);
+    return kExitUsage;
+  }
+  // Before anything opens: opening an output truncates it, and a reader may have it open.
+  if (!checkOutputs(opt, err, sizeof err)) {
+    reporter.report(err);
+    return kExitUsage;
   }
   // Refused even without --serial: a typo here would otherwise surface only on the
   // day the port is added.
@@ -175,10 +190,18 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report(port.error());
     return kExitOutput;
   }
+  if (opt.serialPath && port.notice()[0] != '\0') reporter.report(port.notice());
   static platform::UdpSocket udp;
   if (opt.mavlinkUdp && !udp.open(opt.mavlinkUdp)) {
     reporter.report(udp.error());
     return kExitOutput;
+  }
+  if (opt.mavlinkUdp && !udp.countsDrops()) {  // said once: rx-errors cannot show them
+    std::snprintf(err, sizeof err,
+                  "%s: this system does not report the datagrams it drops (SO_RXQ_OVFL); "
+                  "rx-errors will not count them",
+                  udp.name());
+    reporter.report(err);
   }
 
   static VideoOut video;
@@ -199,6 +222,8 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   po.sourceName = opt.source ? opt.source : source->name();
   po.groundTruthName = groundTruthName;
   po.warnPoorTarget = true;
+  const char* linkName = opt.mavlinkUdp ? "udp" : "serial";  // as status and final lines say
+  po.linkName = linkName;
   Pipeline pipeline(*source, slot, tracker, clock, reporter, po);
   if (opt.outPath) pipeline.addSink(&fileSink);
   // One line per frame floods a terminal: there, only with --stdout (pipes get them).
@@ -218,6 +243,14 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     mc.mount.yawDeg = opt.mountDeg[2];
     for (int i = 0; i < 3; ++i) mc.mount.offsetM[i] = opt.mountOffsetM[i];
     mc.landingPosition = opt.landingPosition;
+    if (opt.mavlinkKey) {  // read before the run: errors said at once
+      mc.signing = true;
+      mc.signingTimestamp = platform::signingTimestampNow();
+    }
+    std::memcpy(mc.key.bytes, mavlinkKey, sizeof mc.key.bytes);
+    mc.acceptSysIdCount = opt.acceptSysIdCount;
+    for (int i = 0; i < opt.acceptSysIdCount; ++i)
+      mc.acceptSysIds[i] = static_cast<uint8_t>(opt.acceptSysIds[i]);
     platform::ByteStream& stream = opt.mavlinkUdp ? static_cast<platform::ByteStream&>(udp) : port;
     static platform::mavlink::MavlinkLink mavlinkLink(stream, clock, reporter, mc);
     link = &mavlinkLink;
@@ -285,6 +318,14 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   }
   const uint64_t runUs = clock.nowUs() - runStartUs;
   pipeline.finish();
+  // A source that ended before its first frame gave nothing to track: not a success.
+  const bool empty = r == StepResult::Done && pipeline.frames() == 0 && !platform::stopRequested();
+  if (empty) {
+    std::snprintf(err, sizeof err, "%s: no decodable frame%s",
+                  opt.source ? opt.source : source->name(),
+                  source->skippedFrames() > 0 ? " (every one damaged, skipped)" : " (it is empty)");
+    reporter.report(err);
+  }
   view.close();
   if (opt.videoPath && videoOk) {
     if (video.close(err, sizeof err)) {
@@ -301,8 +342,10 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     closeFailed = true;
   }
 
-  if (link && !link->drain(1000))
-    reporter.report("serial: could not send the last messages within 1 s");
+  if (link && !link->drain(1000)) {
+    std::snprintf(err, sizeof err, "%s: could not send the last messages within 1 s", linkName);
+    reporter.report(err);
+  }
   if (!opt.quiet) {
     int n = std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
                           static_cast<unsigned>(pipeline.frames()),
@@ -320,8 +363,10 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     if (link && n > 0 && static_cast<size_t>(n) < sizeof err) {
       const platform::LinkStats& s = link->stats();
       std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
-                    "; serial sent %u tx-dropped %u rx-errors %u", static_cast<unsigned>(s.sent),
-                    static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors));
+                    "; %s sent %u tx-dropped %u rx %u rx-errors %u refused %u", linkName,
+                    static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
+                    static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors),
+                    static_cast<unsigned>(s.rxRefused));
     }
     reporter.report(err);
     summary.format(runUs, err, sizeof err);
@@ -342,14 +387,17 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       std::snprintf(err, sizeof err, "%d damaged frames skipped", source->skippedFrames());
       reporter.report(err);
     }
-    if (link && link->stats().txDropped > 0) {
+    if (link && (link->stats().txDropped > 0 || link->stats().rxErrors > 0 ||
+                 link->stats().rxRefused > 0)) {
       const platform::LinkStats& s = link->stats();
-      std::snprintf(err, sizeof err, "serial sent %u tx-dropped %u rx-errors %u",
-                    static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
-                    static_cast<unsigned>(s.rxErrors));
+      std::snprintf(err, sizeof err, "%s sent %u tx-dropped %u rx %u rx-errors %u refused %u",
+                    linkName, static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
+                    static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors),
+                    static_cast<unsigned>(s.rxRefused));
       reporter.report(err);
     }
   }
+  if (empty) return kExitSource;
   switch (r) {
     case StepResult::SourceError:
       return kExitSource;

@@ -493,17 +493,17 @@ bool VideoOut::write(const Frame& frame, const ViewTrack& track, char* err, size
 bool VideoOut::close(char* err, size_t errLen) {
   if (!_impl->writer.isOpened()) return true;
   _impl->writer.release();
-  // VideoWriter reports no write errors (a full disk): the file must at least be there.
-  FILE* f = std::fopen(_impl->path.c_str(), "rb");
-  long size = 0;
-  if (f) {
-    std::fseek(f, 0, SEEK_END);
-    size = std::ftell(f);
-    std::fclose(f);
-  }
-  if (size <= 0) {
-    std::snprintf(err, errLen, "--video %s: the file is empty or missing after writing",
-                  _impl->path.c_str());
+  // VideoWriter reports no write error (a full disk, a file size limit): read the video
+  // back, as cuetrack-synth does, and count the frames in it.
+  cv::VideoCapture cap;
+  uint32_t n = 0;
+  if (cap.open(_impl->path, cv::CAP_OPENCV_MJPEG) && cap.isOpened())
+    while (n < _frames && cap.grab()) ++n;
+  if (n != _frames) {
+    std::snprintf(err, errLen,
+                  "--video %s: only %u of %u frames written could be read back (disk full or "
+                  "write error)",
+                  _impl->path.c_str(), static_cast<unsigned>(n), static_cast<unsigned>(_frames));
     return false;
   }
   return true;

@@ -28,11 +28,16 @@ const char* kFooter =
     "--mavlink-mount: 0,0,0 looks forward; 0,-90,0 looks down, image top forward.\n"
     "--mavlink-landing frd: LANDING_TARGET x,y,z in MAV_FRAME_BODY_FRD (ArduPilot);\n"
     "  angles: angles and distance only (PX4).\n"
+    "--mavlink-key: without it the link is unauthenticated: it trusts its network (anyone\n"
+    "  who can send to it, or forge a system id, can command it; docs/mavlink.md).\n"
+    "numbers are plain decimals (12, -0.5, .5): no blanks, hex, exponents, inf or nan.\n"
     "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM/SIGHUP, STOP command),\n"
-    "  1 source failed (cannot open, a read failed, a damaged frame, or a frame's size\n"
-    "  differs from the frame the track began on), 2 bad command line (an option given\n"
-    "  twice too; --show or --select without a display, a --select cancelled), 3 output\n"
-    "  failed (cannot open, or a write to --out/stdout/--video/--snapshot failed;\n"
+    "  1 source failed (cannot open, a read failed, a damaged frame, no decodable frame\n"
+    "  at all, or a frame's size differs from the frame the track began on), 2 bad\n"
+    "  command line (an option given twice too; --show or --select without a display, a\n"
+    "  --select cancelled; an output (--out, --video, --snapshot) that is the source, lies\n"
+    "  inside its folder, or is another output), 3 output failed (cannot open, a write\n"
+    "  to --out/stdout/--video/--snapshot failed, or --video does not read back whole;\n"
     "  tracking went on), 4 the --box, or the source's ground-truth box, refused by the\n"
     "  tracker";
 
@@ -43,6 +48,30 @@ cli::Convert mavlinkId(int* out) {
     if (!cli::wholeNumber(v, 1, 255, &n).empty()) return std::string("expected an id 1..255");
     *out = static_cast<int>(n);
     return std::string();
+  };
+}
+
+// "N[,N...]": MAVLink system ids 1..255 each (0 is "every system", never a sender), at
+// most AppOptions::kMaxAcceptSysIds (--mavlink-accept-sysid).
+cli::Convert sysIds(AppOptions* o) {
+  return [o](const std::string& v) {
+    const std::string why = "expected system ids 1..255, comma-separated, at most " +
+                            std::to_string(AppOptions::kMaxAcceptSysIds);
+    o->acceptSysIdCount = 0;
+    for (size_t start = 0;;) {
+      const size_t comma = v.find(',', start);
+      const std::string token =
+          v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      long id = 0;
+      if (o->acceptSysIdCount >= AppOptions::kMaxAcceptSysIds ||
+          !cli::wholeNumber(token, 1, 255, &id).empty()) {
+        o->acceptSysIdCount = 0;
+        return why;
+      }
+      o->acceptSysIds[o->acceptSysIdCount++] = static_cast<int>(id);
+      if (comma == std::string::npos) return std::string();
+      start = comma + 1;
+    }
   };
 }
 
@@ -118,11 +147,22 @@ void declare(cli::Command& cmd, AppOptions* o) {
              three(100.f, o->mountOffsetM, "expected X,Y,Z [m], each within +-100"))
       ->group(mavlink);
   cmd.option("--mavlink-udp", "HOST:PORT",
-             "MAVLink over UDP (a MAVLink router on a companion computer) instead of --serial",
+             "MAVLink over UDP (a MAVLink router on a companion computer) instead of --serial; "
+             "commands from that peer only",
              [&t](const std::string& v) {
                t.mavlinkUdp = v;
                return cli::hostPort(v);
              })
+      ->group(mavlink);
+  cmd.text("--mavlink-key", "FILE",
+           "MAVLink 2 signing with the 32-byte key in FILE (chmod 600): our messages signed; "
+           "unsigned, badly signed or replayed commands refused and counted (below)",
+           &t.mavlinkKey)
+      ->group(mavlink);
+  cmd.option("--mavlink-accept-sysid", "N[,N...]",
+             "obey commands only from these MAVLink system ids (the autopilot's, the ground "
+             "station's); others are refused and counted (default: from any system on the link)",
+             sysIds(o))
       ->group(mavlink);
   cmd.option("--mavlink-landing", "frd|angles", "LANDING_TARGET's form (below; default frd)",
              [o](const std::string& v) {
@@ -184,14 +224,15 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
   out->serialPath = text("--serial", t.serial);
   out->outPath = text("--out", t.out);
   out->mavlinkUdp = text("--mavlink-udp", t.mavlinkUdp);
+  out->mavlinkKey = text("--mavlink-key", t.mavlinkKey);
   out->snapshotPath = text("--snapshot", t.snapshot);
   out->videoPath = text("--video", t.video);
   if (cmd.given("--config")) out->preset = t.preset.c_str();
   out->useGroundTruth = !cmd.given("--no-gt");
   // The first --mavlink-* option on the command line.
-  static const char* const kMavlinkOnly[] = {"--mavlink-sysid", "--mavlink-compid",
-                                             "--mavlink-mount", "--mavlink-offset",
-                                             "--mavlink-udp",   "--mavlink-landing"};
+  static const char* const kMavlinkOnly[] = {
+      "--mavlink-sysid", "--mavlink-compid", "--mavlink-mount",        "--mavlink-offset",
+      "--mavlink-udp",   "--mavlink-key",    "--mavlink-accept-sysid", "--mavlink-landing"};
   for (const CLI::Option* opt : cmd.app().parse_order()) {
     for (const char* name : kMavlinkOnly)
       if (!out->mavlinkOnlyOption && opt->get_name() == name) out->mavlinkOnlyOption = name;

@@ -43,6 +43,10 @@ struct AppOptions {
   float mountDeg[3] = {0.f, 0.f, 0.f};      // camera roll, pitch, yaw on the body [deg]
   float mountOffsetM[3] = {0.f, 0.f, 0.f};  // camera position in the body frame FRD [m]
   const char* mavlinkUdp = nullptr;         // --mavlink-udp HOST:PORT instead of --serial
+  static constexpr int kMaxAcceptSysIds = 8;
+  int acceptSysIds[kMaxAcceptSysIds] = {};  // --mavlink-accept-sysid: commands only from these
+  int acceptSysIdCount = 0;                 // 0: from any system
+  const char* mavlinkKey = nullptr;         // --mavlink-key FILE: MAVLink 2 signing
   bool landingPosition = true;              // --mavlink-landing frd (else angles)
   const char* mavlinkOnlyOption = nullptr;  // the first --mavlink-* option given
   bool show = false;                        // --show: live window (View.hpp, host only)
@@ -51,7 +55,7 @@ struct AppOptions {
   const char* videoPath = nullptr;          // --video FILE.avi: every frame with its track
   // The texts as read: the pointers above point into them (nullptr: not given).
   struct Texts {
-    std::string source, serial, out, preset, mavlinkUdp, snapshot, video;
+    std::string source, serial, out, preset, mavlinkUdp, mavlinkKey, snapshot, video;
   } texts;
 };
 

@@ -92,8 +92,8 @@ bool Pipeline::startFromCommand(const Frame& frame, Box* initBox) {
     return true;
   }
   char line[160];
-  std::snprintf(line, sizeof line, "serial START %g,%g,%g,%g refused: %s", box.x, box.y, box.w,
-                box.h, why);
+  std::snprintf(line, sizeof line, "%s START %g,%g,%g,%g refused: %s", _options.linkName, box.x,
+                box.y, box.w, box.h, why);
   _reporter.report(line);
   _tracker.reset();
   _targetActive = false;
@@ -262,9 +262,10 @@ void Pipeline::statusLine() {
   if (_link && n > 0 && static_cast<size_t>(n) < sizeof line) {
     const platform::LinkStats& s = _link->stats();
     std::snprintf(line + n, sizeof line - static_cast<size_t>(n),
-                  " | serial %s sent %u tx-dropped %u rx-errors %u",
+                  " | %s %s sent %u tx-dropped %u rx-errors %u refused %u", _options.linkName,
                   _link->connected() ? "up" : "down", static_cast<unsigned>(s.sent),
-                  static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors));
+                  static_cast<unsigned>(s.txDropped), static_cast<unsigned>(s.rxErrors),
+                  static_cast<unsigned>(s.rxRefused));
   }
   _reporter.report(line);
   _statusLastUs = now;

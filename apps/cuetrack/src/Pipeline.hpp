@@ -25,6 +25,8 @@ struct PipelineOptions {
   // where its ground truth comes from, e.g. "rec/groundtruth.txt" (nullptr: "ground truth").
   const char* sourceName = nullptr;
   const char* groundTruthName = nullptr;
+  // The link as the status line names it: "serial" (--serial), "udp" (--mavlink-udp).
+  const char* linkName = "serial";
   // Warn in one line when a box the user gave (--box, a START) is a poor target
   // (TargetCheck.hpp); ground-truth boxes are taken as they are.
   bool warnPoorTarget = false;

@@ -121,6 +121,7 @@ int main(int argc, char** argv) {
     }
     return kExitPort;
   }
+  if (port.notice()[0] != '\0') problems.report(port.notice());  // a stale lock replaced
   std::snprintf(err, sizeof err, "%s: listening at %ld baud", portPath, baud);
   problems.report(err);
   static platform::FdTrackSink tracks;

@@ -1,5 +1,7 @@
 #include "cuetrack/platform/CommandText.hpp"
 
+#include "cuetrack/platform/DecimalText.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +13,7 @@ namespace {
 // Parses exactly `count` comma-separated integers in [lo, hi] covering all of s.
 bool parseInts(const char* s, long* out, int count, long lo, long hi) {
   for (int i = 0; i < count; ++i) {
+    if (!plainDecimal(s, false, ',')) return false;
     char* end = nullptr;
     errno = 0;
     const long v = std::strtol(s, &end, 10);

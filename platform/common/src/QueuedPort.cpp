@@ -105,6 +105,7 @@ bool QueuedPort::send(const uint8_t* bytes, size_t n, bool counted) {
 size_t QueuedPort::read(uint8_t* buf, size_t cap) {
   if (!_connected) return 0;
   const IoResult r = _port.read(buf, cap, 0);
+  _stats.rxErrors += _port.takeRxDropped();
   if (r.status == IoStatus::Closed || r.status == IoStatus::Error) {
     lost(_port.error());
     return 0;

@@ -1,11 +1,14 @@
 #include "cuetrack/platform/linux/PortLock.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <climits>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -28,6 +31,59 @@ long readPid(const char* lockPath) {
 
 bool alive(long pid) {
   return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+}
+
+enum class Holds : uint8_t { Yes, No, Unknown };
+
+// Whether process pid has the device open: its open files (/proc/PID/fd) against the
+// device's number. Unknown where we may not look (another user's process, we not root).
+Holds holdsDevice(long pid, const char* devicePath) {
+  struct stat dev {};
+  if (::stat(devicePath, &dev) != 0 || !S_ISCHR(dev.st_mode)) return Holds::Unknown;
+  char dir[48];
+  std::snprintf(dir, sizeof dir, "/proc/%ld/fd", pid);
+  DIR* d = ::opendir(dir);
+  if (d == nullptr) return Holds::Unknown;
+  Holds holds = Holds::No;
+  while (const dirent* e = ::readdir(d)) {
+    struct stat st {};
+    if (e->d_name[0] != '.' && ::fstatat(::dirfd(d), e->d_name, &st, 0) == 0 &&
+        S_ISCHR(st.st_mode) && st.st_rdev == dev.st_rdev) {
+      holds = Holds::Yes;
+      break;
+    }
+  }
+  ::closedir(d);
+  return holds;
+}
+
+// A lock file is honoured only while its process holds the device: /run/lock is writable
+// by every local user, and a planted file naming a live process (PID 1) would keep us off
+// the port for good. Where we may not look at the process's files, the lock file must at
+// least belong to the process's user. False with the reason in why.
+bool honoured(long pid, const char* devicePath, const char* lockPath, char* why, size_t n) {
+  if (!alive(pid)) {
+    std::snprintf(why, n, "process %ld is gone", pid);
+    return false;
+  }
+  switch (holdsDevice(pid, devicePath)) {
+    case Holds::Yes:
+      return true;
+    case Holds::No:
+      std::snprintf(why, n, "process %ld does not have %s open", pid, devicePath);
+      return false;
+    case Holds::Unknown:
+      break;
+  }
+  char proc[32];
+  std::snprintf(proc, sizeof proc, "/proc/%ld", pid);
+  struct stat owner {
+  }, lock{};
+  if (::stat(proc, &owner) != 0 || ::lstat(lockPath, &lock) != 0) return true;  // cannot tell
+  if (owner.st_uid == lock.st_uid) return true;
+  std::snprintf(why, n, "process %ld runs as user %u, the lock file belongs to user %u", pid,
+                static_cast<unsigned>(owner.st_uid), static_cast<unsigned>(lock.st_uid));
+  return false;
 }
 
 }  // namespace
@@ -56,11 +112,15 @@ long PortLock::holder(const char* devicePath) const {
   char path[sizeof _lockPath];
   if (!lockPathFor(_dir, devicePath, path, sizeof path)) return 0;
   const long pid = readPid(path);
-  return pid != static_cast<long>(::getpid()) && alive(pid) ? pid : 0;
+  char why[160];
+  return pid != static_cast<long>(::getpid()) && honoured(pid, devicePath, path, why, sizeof why)
+             ? pid
+             : 0;
 }
 
 bool PortLock::acquire(const char* devicePath, char* err, size_t errLen) {
   release();
+  _note[0] = '\0';
   if (!lockPathFor(_dir, devicePath, _lockPath, sizeof _lockPath)) {
     _lockPath[0] = '\0';
     return true;  // no lock file for a name this long; the device's own locks remain
@@ -85,12 +145,15 @@ bool PortLock::acquire(const char* devicePath, char* err, size_t errLen) {
       _held = true;
       return true;
     }
-    if (alive(pid)) {
+    char why[160] = "no process named in it";
+    if (pid > 0 && honoured(pid, devicePath, _lockPath, why, sizeof why)) {
       std::snprintf(err, errLen, "%s: in use by process %ld (lock file %s)", devicePath, pid,
                     _lockPath);
       return false;
     }
-    ::unlink(_lockPath);  // stale: its process is gone
+    ::unlink(_lockPath);  // stale: said once, as the caller reports note()
+    std::snprintf(_note, sizeof _note, "%s: replaced the stale lock file %s (%s)", devicePath,
+                  _lockPath, why);
   }
   return true;
 }

@@ -18,8 +18,10 @@ bool inUnit(float v) {
 }
 
 // A command's "target camera id": 0 (all cameras), NaN (not given, as some senders mark
-// an unused parameter) or our component id.
-bool cameraIsUs(float id, uint8_t compId) {
+// an unused parameter) or our component id. A broadcast command must name 0: the camera
+// protocol has every other id NACKed with DENIED.
+bool cameraIsUs(float id, uint8_t compId, bool broadcast) {
+  if (broadcast) return id == 0.f;
   return std::isnan(id) || id == 0.f || id == static_cast<float>(compId);
 }
 
@@ -37,7 +39,7 @@ bool MavlinkLink::Interval::due(uint64_t nowUs) {
 
 MavlinkLink::MavlinkLink(ByteStream& port, const Clock& clock, Reporter& reporter,
                          const LinkConfig& config)
-    : _port(port, clock, reporter), _clock(clock), _config(config) {
+    : _port(port, clock, reporter), _clock(clock), _config(config), _signatures(config.key) {
   _startUs = _clock.nowUs();
 }
 
@@ -48,24 +50,29 @@ bool MavlinkLink::transmit(uint32_t msgId, const uint8_t* payload, size_t len) {
   h.compId = _config.compId;
   h.msgId = msgId;
   uint8_t wire[kMaxFrameBytes];
-  const size_t n = encodeFrame(h, payload, len, wire, sizeof wire);
+  const size_t n = _config.signing ? encodeSignedFrame(h, payload, len, _config.key, _config.linkId,
+                                                       nextSigningTimestamp(), wire, sizeof wire)
+                                   : encodeFrame(h, payload, len, wire, sizeof wire);
   return n > 0 && _port.send(wire, n);
+}
+
+// The wall clock's time as the link's clock moves it on, never behind what we signed or
+// saw last (the spec's rule for a system whose clock is not set).
+uint64_t MavlinkLink::nextSigningTimestamp() {
+  uint64_t t = _config.signingTimestamp + (_clock.nowUs() - _startUs) / 10;
+  if (t <= _lastSignedTimestamp) t = _lastSignedTimestamp + 1;
+  if (t <= _signatures.newest()) t = _signatures.newest() + 1;
+  _lastSignedTimestamp = t;
+  _signatures.noteTimestamp(t);
+  return t;
 }
 
 void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
   if (_port.service()) _parser.reset();
-  for (;;) {
-    const size_t got = _port.read(_rx, sizeof _rx);
-    for (size_t i = 0; i < got; ++i) {
-      Message m;
-      const uint32_t badBefore = _parser.stats().badCrc + _parser.stats().badFrame;
-      if (_parser.push(_rx[i], &m)) {
-        ++_port.stats().rxFrames;
-        handle(m, control);
-      }
-      _port.stats().rxErrors += _parser.stats().badCrc + _parser.stats().badFrame - badBefore;
-    }
-    if (got < sizeof _rx) break;
+  if (_port.datagrams()) {
+    pollDatagrams(control);
+  } else {
+    pollBytes(control);
   }
   const uint64_t now = _clock.nowUs();
   if (_port.connected() && (!_heartbeatSent || now - _lastHeartbeatUs >= kHeartbeatPeriodUs)) {
@@ -75,36 +82,119 @@ void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
   }
 }
 
-// Commands for another system or component are not ours to answer.
-bool MavlinkLink::forUs(uint8_t targetSystem, uint8_t targetComponent) const {
-  return (targetSystem == 0 || targetSystem == _config.sysId) &&
-         (targetComponent == 0 || targetComponent == _config.compId);
+// A serial line: a byte stream, frames may straddle reads.
+void MavlinkLink::pollBytes(LinkControl& control) {
+  for (;;) {
+    const size_t got = _port.read(_rx, sizeof _rx);
+    for (size_t i = 0; i < got; ++i) {
+      Message m;
+      const uint32_t badBefore = _parser.stats().badCrc + _parser.stats().badFrame;
+      if (_parser.push(_rx[i], &m)) received(m, control);
+      _port.stats().rxErrors += _parser.stats().badCrc + _parser.stats().badFrame - badBefore;
+    }
+    if (got < sizeof _rx) break;
+  }
+}
+
+// UDP: each datagram on its own (noise in one cannot swallow a frame in the next), as
+// many as wait, up to the poll's bound.
+void MavlinkLink::pollDatagrams(LinkControl& control) {
+  size_t bytes = 0;
+  for (int d = 0; d < kMaxDatagramsPerPoll && bytes < kMaxRxBytesPerPoll; ++d) {
+    const size_t got = _port.read(_rx, sizeof _rx);
+    if (got == 0) break;
+    bytes += got;
+    const uint32_t badBefore = _parser.stats().badCrc + _parser.stats().badFrame;
+    size_t at = 0;
+    Message m;
+    while (_parser.nextInDatagram(_rx, got, &at, &m)) received(m, control);
+    _port.stats().rxErrors += _parser.stats().badCrc + _parser.stats().badFrame - badBefore;
+  }
+}
+
+void MavlinkLink::received(const Message& m, LinkControl& control) {
+  ++_port.stats().rxFrames;
+  handle(m, control);
+}
+
+// Commands for another system or component are not ours to answer; system or component 0
+// addresses everyone.
+MavlinkLink::Addressing MavlinkLink::addressing(uint8_t targetSystem,
+                                                uint8_t targetComponent) const {
+  if ((targetSystem != 0 && targetSystem != _config.sysId) ||
+      (targetComponent != 0 && targetComponent != _config.compId))
+    return Addressing::NotOurs;
+  return targetSystem == _config.sysId && targetComponent == _config.compId ? Addressing::ToUs
+                                                                            : Addressing::Broadcast;
+}
+
+bool MavlinkLink::accepted(uint8_t fromSys) const {
+  if (_config.acceptSysIdCount == 0) return true;
+  for (int i = 0; i < _config.acceptSysIdCount; ++i)
+    if (_config.acceptSysIds[i] == fromSys) return true;
+  return false;
+}
+
+// What the camera protocol lets everyone ask of every camera: CAMERA_INFORMATION (discovery)
+// and the tracking commands, which then must name camera 0 (checked with their parameters).
+// SET_MESSAGE_INTERVAL would change our stream for whoever asked everyone: refused.
+bool MavlinkLink::broadcastAllowed(const CommandLong& c) const {
+  switch (c.command) {
+    case kCmdCameraTrackRectangle:
+    case kCmdCameraTrackPoint:
+    case kCmdCameraStopTracking:
+      return true;
+    case kCmdRequestMessage:
+      return c.param[0] == static_cast<float>(kMsgCameraInformation);
+    default:
+      return false;
+  }
 }
 
 void MavlinkLink::handle(const Message& m, LinkControl& control) {
-  if (m.header.msgId == kMsgCommandLong) {
-    const CommandLong c = unpackCommandLong(m.payload);
-    if (forUs(c.targetSystem, c.targetComponent))
-      handleCommand(c, m.header.sysId, m.header.compId, control);
-  } else if (m.header.msgId == kMsgCommandInt) {
-    const CommandInt c = unpackCommandInt(m.payload);
-    if (forUs(c.targetSystem, c.targetComponent))
-      sendAck(c.command, kResultCommandLongOnly, m.header.sysId, m.header.compId);
+  if (m.header.msgId != kMsgCommandLong && m.header.msgId != kMsgCommandInt) return;
+  const bool isLong = m.header.msgId == kMsgCommandLong;
+  const CommandLong c = isLong ? unpackCommandLong(m.payload) : CommandLong{};
+  const CommandInt ci = isLong ? CommandInt{} : unpackCommandInt(m.payload);
+  const Addressing to = isLong ? addressing(c.targetSystem, c.targetComponent)
+                               : addressing(ci.targetSystem, ci.targetComponent);
+  if (to == Addressing::NotOurs) return;
+  // With a key: unsigned, badly signed and replayed commands are not obeyed, not answered.
+  if (_config.signing && _signatures.check(m) != SignatureCheck::Good) {
+    ++_port.stats().rxRefused;
+    return;
+  }
+  if (!accepted(m.header.sysId)) {  // a stranger: no answer, it learns nothing
+    ++_port.stats().rxRefused;
+    return;
+  }
+  if (to == Addressing::Broadcast && (!isLong || !broadcastAllowed(c))) {
+    // No answer (every component would ACK otherwise); counted as refused when we would
+    // obey it addressed to us, else it is someone else's (an autopilot's mission camera
+    // commands, requests for other messages).
+    if (isLong && c.command == kCmdSetMessageInterval) ++_port.stats().rxRefused;
+    return;
+  }
+  if (isLong) {
+    handleCommand(c, m.header.sysId, m.header.compId, to == Addressing::Broadcast, control);
+  } else {
+    sendAck(ci.command, kResultCommandLongOnly, m.header.sysId, m.header.compId);
   }
 }
 
 void MavlinkLink::handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t fromComp,
-                                LinkControl& control) {
+                                bool broadcast, LinkControl& control) {
   uint8_t result = kResultUnsupported;
   switch (c.command) {
     case kCmdCameraTrackRectangle:
     case kCmdCameraTrackPoint:
-      result = startTracking(c, fromSys, fromComp, control);
+      result = startTracking(c, fromSys, fromComp, broadcast, control);
       if (result == kDeferred) return;  // answered once the tracker has tried it
       break;
     case kCmdCameraStopTracking:
-      if (!cameraIsUs(c.param[0], _config.compId)) {
+      if (!cameraIsUs(c.param[0], _config.compId, broadcast)) {
         result = kResultDenied;
+        ++_port.stats().rxRefused;
         break;
       }
       control.requestReset();
@@ -129,7 +219,7 @@ void MavlinkLink::handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t f
 }
 
 uint8_t MavlinkLink::startTracking(const CommandLong& c, uint8_t fromSys, uint8_t fromComp,
-                                   LinkControl& control) {
+                                   bool broadcast, LinkControl& control) {
   StartRequest r;
   float camera = 0.f;
   if (c.command == kCmdCameraTrackRectangle) {
@@ -148,7 +238,10 @@ uint8_t MavlinkLink::startTracking(const CommandLong& c, uint8_t fromSys, uint8_
     r.pointY = c.param[1];
     r.radius = radius;
   }
-  if (!cameraIsUs(camera, _config.compId)) return kResultDenied;
+  if (!cameraIsUs(camera, _config.compId, broadcast)) {
+    ++_port.stats().rxRefused;
+    return kResultDenied;
+  }
   // A free slot: the pipeline answers the older pending start (Superseded) before it
   // keeps this one, so at most two are ever waiting.
   PendingStart* slot = nullptr;

@@ -108,6 +108,45 @@ size_t encodeCommandLong(uint8_t sysId, uint8_t compId, uint8_t targetSys, uint8
   return n;
 }
 
+size_t encodeSignedCommandLong(uint8_t sysId, uint8_t compId, uint8_t targetSys, uint8_t targetComp,
+                               uint16_t command, const float params[7], const uint8_t key[32],
+                               uint8_t linkId, uint64_t timestamp, uint8_t* out, size_t cap) {
+  mavlink_signing_t signing{};
+  signing.flags = MAVLINK_SIGNING_FLAG_SIGN_OUTGOING;
+  signing.link_id = linkId;
+  signing.timestamp = timestamp;
+  std::memcpy(signing.secret_key, key, 32);
+  mavlink_status_t* status = mavlink_get_channel_status(MAVLINK_COMM_0);
+  status->signing = &signing;  // the pack functions sign on channel 0's settings
+  mavlink_message_t msg;
+  mavlink_msg_command_long_pack(sysId, compId, &msg, targetSys, targetComp, command, 0, params[0],
+                                params[1], params[2], params[3], params[4], params[5], params[6]);
+  status->signing = nullptr;
+  uint8_t buf[MAVLINK_MAX_PACKET_LEN];
+  const uint16_t n = mavlink_msg_to_send_buffer(buf, &msg);
+  if (n > cap) return 0;
+  std::memcpy(out, buf, n);
+  return n;
+}
+
+bool verifiesSigned(const uint8_t* frame, size_t n, const uint8_t key[32]) {
+  mavlink_signing_t signing{};
+  std::memcpy(signing.secret_key, key, 32);
+  mavlink_signing_streams_t streams{};
+  mavlink_status_t status{};
+  status.signing = &signing;
+  status.signing_streams = &streams;
+  mavlink_message_t rx{}, msg{};
+  mavlink_status_t msgStatus{};
+  bool ok = false;
+  for (size_t i = 0; i < n; ++i) {
+    const uint8_t r = mavlink_frame_char_buffer(&rx, &status, frame[i], &msg, &msgStatus);
+    if (r == MAVLINK_FRAMING_OK) ok = (msg.incompat_flags & MAVLINK_IFLAG_SIGNED) != 0;
+    if (r == MAVLINK_FRAMING_BAD_CRC || r == MAVLINK_FRAMING_BAD_SIGNATURE) return false;
+  }
+  return ok;
+}
+
 uint8_t crcExtraOf(uint32_t msgId) {
   const mavlink_msg_entry_t* e = mavlink_get_msg_entry(msgId);
   return e ? e->crc_extra : 0;

@@ -51,6 +51,13 @@ class Decoder {
 size_t encodeCommandLong(uint8_t sysId, uint8_t compId, uint8_t targetSys, uint8_t targetComp,
                          uint16_t command, const float params[7], uint8_t* out, size_t cap);
 
+// The same, signed by the library (MAVLink 2 signing with key, linkId, timestamp).
+size_t encodeSignedCommandLong(uint8_t sysId, uint8_t compId, uint8_t targetSys, uint8_t targetComp,
+                               uint16_t command, const float params[7], const uint8_t key[32],
+                               uint8_t linkId, uint64_t timestamp, uint8_t* out, size_t cap);
+// True when the library's parser, given key, takes the frame as correctly signed.
+bool verifiesSigned(const uint8_t* frame, size_t n, const uint8_t key[32]);
+
 // The library's own CRC_EXTRA for a message id (0 when it does not know it), and a full
 // frame of id with our payload bytes, packed by the library's framing code.
 uint8_t crcExtraOf(uint32_t msgId);

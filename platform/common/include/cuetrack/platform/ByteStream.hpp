@@ -37,6 +37,12 @@ class ByteStream {
   // Last error as one line naming the device, e.g. "/dev/ttyUSB0: Input/output error".
   virtual const char* error() const = 0;
   virtual const char* name() const = 0;
+  // True when each read returns exactly one whole datagram (UDP): a reader parses each on
+  // its own, so a bad one cannot reach into the next.
+  virtual bool datagrams() const { return false; }
+  // Inbound units the OS dropped before we could read them (a datagram socket's receive
+  // buffer overflowed) since the last call; 0 where nothing can be dropped unseen.
+  virtual uint32_t takeRxDropped() { return 0; }
 };
 
 }  // namespace cuetrack::platform

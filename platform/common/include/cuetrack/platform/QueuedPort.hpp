@@ -30,8 +30,11 @@ class QueuedPort {
   // Flushes, and while disconnected retries the device every kRetryPeriodUs. True on
   // the call that reconnected (the caller resets its decoder).
   bool service();
-  // Reads what arrived without waiting; 0 when nothing did or the line was lost.
+  // Reads what arrived without waiting; 0 when nothing did or the line was lost. On a
+  // datagram stream, one whole datagram; what the OS dropped before is counted in
+  // stats().rxErrors.
   size_t read(uint8_t* buf, size_t cap);
+  bool datagrams() const { return _port.datagrams(); }
   // At exit: waits (at most ~maxMs) until the queue is on the line. True when empty.
   bool drain(int maxMs);
 

@@ -58,7 +58,9 @@ struct LinkStats {
   uint32_t sent = 0;       // messages queued for the line
   uint32_t txDropped = 0;  // messages dropped: line too slow, or disconnected
   uint32_t rxFrames = 0;   // good inbound frames
-  uint32_t rxErrors = 0;   // rejected inbound frames (framing, CRC, malformed commands)
+  uint32_t rxErrors = 0;   // rejected inbound frames (framing, CRC, malformed commands),
+                           // and datagrams the OS dropped before they were read
+  uint32_t rxRefused = 0;  // well-formed commands refused: not from an accepted sender
   uint32_t disconnects = 0;
   uint32_t reconnects = 0;
 };

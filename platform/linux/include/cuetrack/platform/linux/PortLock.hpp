@@ -20,16 +20,21 @@ class PortLock {
   PortLock& operator=(const PortLock&) = delete;
 
   // Takes the lock file of devicePath (symlinks resolved: two names of one device share
-  // it). False, with one line in err naming the device and the holder's PID, when a live
-  // process holds it; a lock file whose process is gone is stale and replaced. A lock
-  // folder we cannot write (missing, read-only, no permission) is not an error: held()
-  // stays false and the device's own locks must do.
+  // it). False, with one line in err naming the device and the holder's PID, when the
+  // process it names holds the device (alive, with the device open; where its open files
+  // cannot be seen, running as the lock file's owner). Any other lock file is stale and
+  // replaced, with one line in note() saying why. A lock folder we cannot write (missing,
+  // read-only, no permission) is not an error: held() stays false and the device's own
+  // locks must do.
   bool acquire(const char* devicePath, char* err, size_t errLen);
+  // After acquire(): "DEV: replaced the stale lock file ... (why)", or "" when none was.
+  const char* note() const { return _note; }
   void release();  // removes the lock file if we made it
   bool held() const { return _held; }
   const char* path() const { return _lockPath; }
 
-  // The PID in devicePath's lock file if a live process other than us holds it, else 0.
+  // The PID in devicePath's lock file if a process other than us holds the device by the
+  // rule of acquire(), else 0.
   long holder(const char* devicePath) const;
 
   // lockDir/LCK..NAME for a device: NAME is the path below /dev with '/' as '_'
@@ -39,6 +44,7 @@ class PortLock {
  private:
   char _dir[128]{};
   char _lockPath[384]{};
+  char _note[768]{};
   bool _held{false};
 };
 

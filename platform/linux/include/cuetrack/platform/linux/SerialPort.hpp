@@ -31,6 +31,8 @@ class SerialPort final : public ByteStream {
   void close() override;  // also gives up the lock
   const char* error() const override { return _error; }
   const char* name() const override { return _path; }
+  // After open(): one line when a stale lock file was replaced (PortLock::note()), else "".
+  const char* notice() const { return _lock.note(); }
 
  private:
   bool openFd();

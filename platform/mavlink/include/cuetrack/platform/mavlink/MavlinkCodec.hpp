@@ -53,19 +53,25 @@ struct Header {
 // One unsigned MAVLink 2 frame into out. The payload's trailing zero bytes are cut (as
 // MAVLink 2 requires senders to; at least one byte stays). Returns the frame's size, or 0
 // when msgId is unknown, len exceeds the message's payload, or cap is too small.
-size_t encodeFrame(const Header& h, const uint8_t* payload, size_t len, uint8_t* out, size_t cap);
+// incompatFlags: kIncompatSigned for a frame a signature block will follow (Signing.hpp).
+size_t encodeFrame(const Header& h, const uint8_t* payload, size_t len, uint8_t* out, size_t cap,
+                   uint8_t incompatFlags = 0);
 
 struct Message {
   Header header{};
   uint8_t incompatFlags = 0;
-  uint8_t len = 0;                      // as sent (maybe truncated)
-  uint8_t payload[kMaxPayloadBytes]{};  // zero past len: truncated fields read as 0
+  uint8_t compatFlags = 0;
+  uint8_t len = 0;                       // as sent (maybe truncated)
+  uint8_t payload[kMaxPayloadBytes]{};   // zero past len: truncated fields read as 0
+  uint16_t crc = 0;                      // as sent
+  uint8_t signature[kSignatureBytes]{};  // signed frames: link id, timestamp, signature
 };
 
 struct ParserStats {
   uint32_t messages = 0;  // known id, good CRC
   uint32_t badCrc = 0;    // known id, CRC wrong
-  uint32_t badFrame = 0;  // unknown incompat flag, or longer than its message
+  uint32_t badFrame = 0;  // unknown incompat flag, longer than its message, or (datagrams)
+                          // cut by the datagram's end
   uint32_t ignored = 0;   // well-framed, an id we do not know (another component's traffic)
 };
 
@@ -76,12 +82,15 @@ class Parser {
  public:
   // True when `byte` completed a good message (copied to *out).
   bool push(uint8_t byte, Message* out);
+  // A whole datagram (MAVLink over UDP: whole frames, one or more to a datagram), parsed on
+  // its own: nothing is kept for the next one, and a frame its end cuts is a bad frame.
+  // Finds the next good message from *offset on (moved past it); false at the end. The
+  // byte stream's held bytes (push) are neither used nor changed; the stats are shared.
+  bool nextInDatagram(const uint8_t* data, size_t n, size_t* offset, Message* out);
   const ParserStats& stats() const { return _stats; }
   void reset() { _n = 0; }
 
  private:
-  enum class Check : uint8_t { NeedMore, Good, BadCrc, BadFrame, Ignored };
-  Check check() const;
   void resync();  // drop the first byte, restart at the next start byte
 
   uint8_t _buf[kMaxFrameBytes]{};

@@ -7,6 +7,10 @@
 //        CAMERA_INFORMATION on MAV_CMD_REQUEST_MESSAGE; one COMMAND_ACK per command.
 //   in:  COMMAND_LONG: CAMERA_TRACK_RECTANGLE, CAMERA_TRACK_POINT, CAMERA_STOP_TRACKING,
 //        SET_MESSAGE_INTERVAL, REQUEST_MESSAGE. Others addressed to us: UNSUPPORTED.
+//        Only from the accepted system ids (when given); broadcasts only where the camera
+//        protocol allows them; the rest refused without an answer and counted.
+// Over a datagram stream (UDP) each datagram is parsed on its own, and every poll reads
+// the datagrams waiting, up to a bound that keeps the frame rate.
 // docs/mavlink.md describes every field.
 #pragma once
 
@@ -21,12 +25,26 @@
 #include "cuetrack/platform/mavlink/CameraMount.hpp"
 #include "cuetrack/platform/mavlink/MavlinkCodec.hpp"
 #include "cuetrack/platform/mavlink/MavlinkMessages.hpp"
+#include "cuetrack/platform/mavlink/Signing.hpp"
 
 namespace cuetrack::platform::mavlink {
 
 struct LinkConfig {
+  static constexpr int kMaxAcceptedSysIds = 8;
   uint8_t sysId = 1;                  // the vehicle's system id (the autopilot's, usually 1)
   uint8_t compId = kMavCompIdCamera;  // our component id
+  // Commands are obeyed only from these senders' system ids (--mavlink-accept-sysid);
+  // none given: from any.
+  uint8_t acceptSysIds[kMaxAcceptedSysIds]{};
+  int acceptSysIdCount = 0;
+  // MAVLink 2 signing (--mavlink-key): our messages signed with this link id; commands
+  // obeyed only when signed with the key, and newer than their stream's last (replays).
+  bool signing = false;
+  SigningKey key{};
+  uint8_t linkId = 0;
+  // The signing timestamp at construction (10 us units since 2015-01-01, from the wall
+  // clock; 0 when it is not known): then moved on by the link's clock.
+  uint64_t signingTimestamp = 0;
   CameraMount mount{};
   // LANDING_TARGET with x, y, z in MAV_FRAME_BODY_FRD (ArduPilot); false: angles and
   // distance only, position_valid 0 (PX4 reads only that, as an IRLock-style report).
@@ -36,6 +54,12 @@ struct LinkConfig {
 class MavlinkLink final : public TrackLink {
  public:
   static constexpr uint64_t kHeartbeatPeriodUs = 1000000;  // MAVLink's 1 Hz
+  // One poll reads at most this many datagrams, or past this many bytes no further one
+  // (a whole datagram is always parsed): a flood costs a frame a millisecond or two, and
+  // what the kernel then drops is counted. 100 messages/s are a few datagrams a frame.
+  static constexpr int kMaxDatagramsPerPoll = 256;
+  static constexpr size_t kMaxRxBytesPerPoll = 128 * 1024;
+  static constexpr size_t kRxBufferBytes = 65535;  // the largest UDP datagram
 
   MavlinkLink(ByteStream& port, const Clock& clock, Reporter& reporter, const LinkConfig& config);
 
@@ -67,10 +91,17 @@ class MavlinkLink final : public TrackLink {
   };
   static constexpr int kPendingSlots = 2;  // the old one is answered as the new one arrives
 
-  bool forUs(uint8_t targetSystem, uint8_t targetComponent) const;
+  enum class Addressing : uint8_t { NotOurs, ToUs, Broadcast };
+  Addressing addressing(uint8_t targetSystem, uint8_t targetComponent) const;
+  bool accepted(uint8_t fromSys) const;
+  bool broadcastAllowed(const CommandLong& c) const;
+  void pollBytes(LinkControl& control);
+  void pollDatagrams(LinkControl& control);
+  void received(const Message& m, LinkControl& control);
   void handle(const Message& m, LinkControl& control);
-  void handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t fromComp, LinkControl& control);
-  uint8_t startTracking(const CommandLong& c, uint8_t fromSys, uint8_t fromComp,
+  void handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t fromComp, bool broadcast,
+                     LinkControl& control);
+  uint8_t startTracking(const CommandLong& c, uint8_t fromSys, uint8_t fromComp, bool broadcast,
                         LinkControl& control);
   uint8_t setInterval(const CommandLong& c);
   bool transmit(uint32_t msgId, const uint8_t* payload, size_t len);
@@ -80,11 +111,15 @@ class MavlinkLink final : public TrackLink {
   void sendStatus(const FrameReport& r);
   void sendLandingTarget(const FrameReport& r);
 
+  uint64_t nextSigningTimestamp();
+
   QueuedPort _port;
   const Clock& _clock;
   LinkConfig _config;
   Parser _parser;
-  uint8_t _rx[256]{};
+  SignatureChecker _signatures;
+  uint64_t _lastSignedTimestamp{0};
+  uint8_t _rx[kRxBufferBytes]{};
   uint8_t _seq{0};
   bool _heartbeatSent{false};
   uint64_t _lastHeartbeatUs{0};

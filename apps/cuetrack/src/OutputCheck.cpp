@@ -1,0 +1,56 @@
+#include "OutputCheck.hpp"
+
+#include <cstdio>
+#include <cstring>
+
+#include "Sources.hpp"
+#include "cuetrack/platform/linux/PathClash.hpp"
+
+namespace cuetrack::app {
+namespace {
+
+constexpr int kMaxInputs = 8;
+constexpr size_t kPathBytes = 1024;
+
+}  // namespace
+
+bool checkOutputs(const AppOptions& opt, char* err, size_t errLen) {
+  platform::NamedPath outputs[3];
+  int nOut = 0;
+  if (opt.outPath && std::strcmp(opt.outPath, "-") != 0) outputs[nOut++] = {"--out", opt.outPath};
+  if (opt.videoPath) outputs[nOut++] = {"--video", opt.videoPath};
+  if (opt.snapshotPath) outputs[nOut++] = {"--snapshot", opt.snapshotPath};
+  if (nOut == 0) return true;
+
+  static char paths[kMaxInputs][kPathBytes];
+  platform::NamedPath inputs[kMaxInputs];
+  int nIn = 0;
+  const char* spec = opt.source;
+  if (spec && std::strncmp(spec, "kinect", 6) != 0 && std::strncmp(spec, "synth", 5) != 0) {
+    const bool still = std::strncmp(spec, "still:", 6) == 0;
+    if (still || std::strncmp(spec, "pan:", 4) == 0) {
+      // pan:RGB,DEPTH,... / still:RGB,DEPTH,...:SCENE@...: the files named, before any ':'.
+      const char* s = spec + (still ? 6 : 4);
+      while (*s != '\0' && *s != ':' && nIn < kMaxInputs) {
+        const size_t n = std::strcspn(s, ",:");
+        std::snprintf(paths[nIn], kPathBytes, "%.*s", static_cast<int>(n), s);
+        inputs[nIn] = {"--source", paths[nIn]};
+        ++nIn;
+        s += n;
+        if (*s == ',') ++s;
+      }
+    } else {
+      inputs[nIn++] = {"--source", spec};
+      // A video's ground truth beside it (NAME.gt.txt) is an input too; a folder's is inside.
+      const size_t n = std::strlen(spec);
+      if (n > 4 && std::strcmp(spec + n - 4, ".avi") == 0) {
+        describeGroundTruth(spec, paths[nIn], kPathBytes);
+        inputs[nIn] = {"--source's ground truth", paths[nIn]};
+        ++nIn;
+      }
+    }
+  }
+  return platform::checkPathClashes(outputs, nOut, inputs, nIn, err, errLen);
+}
+
+}  // namespace cuetrack::app
