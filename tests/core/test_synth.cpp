@@ -141,7 +141,7 @@ TEST_CASE("every preset tracks the synthetic moving target", "[core][e2e]") {
   }
 }
 
-TEST_CASE("best in 2D keeps a target that moves twice as far per frame", "[core][e2e]") {
+TEST_CASE("best in 2D keeps a target that moves twice as far per frame", "[core][e2e][motion]") {
   // The moving scene given every other frame, colour only (best falls back to 2D): the
   // target moves up to ~0.3 of its side per frame. The fast-motion particles alone keep
   // it: the control, best without them and without the correlation cue (which keeps it
@@ -171,7 +171,7 @@ TEST_CASE("best in 2D keeps a target that moves twice as far per frame", "[core]
   REQUIRE(controlHits <= 0.7f);
 }
 
-TEST_CASE("best in 3D keeps a target seen at 7.5 fps", "[core][e2e]") {
+TEST_CASE("best in 3D keeps a target seen at 7.5 fps", "[core][e2e][motion]") {
   // The moving scene given every fourth frame (7.5 fps, with depth): the AR(1) model
   // does not reach where the target is next. Seeds 1-8: best keeps it in every frame; the
   // fast-motion particles alone (no correlation cue) 0.77-1.0, mean 0.92; without either
@@ -208,7 +208,7 @@ TEST_CASE("best in 3D keeps a target seen at 7.5 fps", "[core][e2e]") {
   REQUIRE(a.overlapSum == b.overlapSum);
 }
 
-TEST_CASE("best follows a target crossing the frame at 40 px a frame", "[core][e2e]") {
+TEST_CASE("best follows a target crossing the frame at 40 px a frame", "[core][e2e][motion]") {
   // The fast scene: a 40 px wide target moving 40 px a frame, turning every 12 frames. The
   // particles' motion noise does not reach where it is next; the correlation cue's map
   // (1.5 sides around the last estimate) does. Seeds 1-5: best keeps it in all five (hit
@@ -237,7 +237,7 @@ TEST_CASE("best follows a target crossing the frame at 40 px a frame", "[core][e
   CHECK(kept >= seeds - 1);
 }
 
-TEST_CASE("best finds a target again that comes back elsewhere", "[core][e2e]") {
+TEST_CASE("best finds a target again that comes back elsewhere", "[core][e2e][reacquire]") {
   // The leave-return scene: the target leaves the view on the right at about frame 45 and
   // comes back from the left 30 frames later, fully in view from about frame 90. While
   // lost, the correlation template searches the whole image, and search windows on a
@@ -282,7 +282,7 @@ TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2
   }
 }
 
-TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core][e2e]") {
+TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core][e2e][reacquire]") {
   // The box hides the target completely from about frame 67 to 90; from frame 96 on it
   // is in full view again. Without re-acquisition the tracker never finds it again.
   // Seeds 1-10: hit rate after frame 100 0.94-1.0, mean 0.99 (0.80 over seeds 1-20 before
@@ -317,13 +317,13 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
   CHECK(meanNoLost <= 0.5f);
 }
 
-TEST_CASE("best holds the target behind a look-alike that crosses in front of it", "[core][e2e]") {
+TEST_CASE("best holds the target behind a look-alike that crosses in front of it", "[core][e2e][occlude]") {
   // The look-alike (1.6 m) covers the target (2.4 m) partly from frame 46 to 104 and wholly
   // from 67 to 84. Seeds 1-5, scored as cuetrack-bench scores (a hit where the target is
   // visible and tracked, "not visible" where it is hidden): 0.99-1.0 with the occlusion
   // gate; 0.48-0.83, mean 0.69, without it (lost for ~45 frames from ~55, after learning
-  // the look-alike's edge). Under qemu one seed.
-  const uint64_t seeds = emulated() ? 1 : 5;
+  // the look-alike's edge; seeds 1-3, as under the sanitizers: 0.61). Under qemu one seed.
+  const uint64_t seeds = emulated() ? 1 : sanitized() ? 3 : 5;
   TrackerConfig noGate = presetConfig(Preset::Best);
   noGate.occlusionGate = false;
   float sum = 0.f, sumNoGate = 0.f;
@@ -344,11 +344,12 @@ TEST_CASE("best holds the target behind a look-alike that crosses in front of it
   CHECK(mean >= meanNoGate + 0.15f);
 }
 
-TEST_CASE("best says when the target's depth is predicted, and holds it by colour", "[core][e2e]") {
+TEST_CASE("best says when the target's depth is predicted, and holds it by colour", "[core][e2e][occlude]") {
   // The no-depth scene: the target reads no depth in frames 40-109, moving meanwhile.
   // Seeds 1-3: flagged on all of them and on no other; mean overlap over them 0.86-0.89
-  // (best with its depth withheld from the start: 0.85 over the whole scene).
-  const uint64_t seeds = emulated() ? 1 : 3;
+  // (best with its depth withheld from the start: 0.85 over the whole scene). Under qemu
+  // or the sanitizers one seed.
+  const uint64_t seeds = emulated() || sanitized() ? 1 : 3;
   const int frames = emulated() ? 60 : 150;
   for (uint64_t seed = 1; seed <= seeds; ++seed) {
     const Stats s = runScene("no-depth", presetConfig(Preset::Best), seed, frames);
@@ -373,7 +374,7 @@ TEST_CASE("best says when the target's depth is predicted, and holds it by colou
   }
 }
 
-TEST_CASE("best reports a first box on a plain wall lost within a few frames", "[core][e2e]") {
+TEST_CASE("best reports a first box on a plain wall lost within a few frames", "[core][e2e][reacquire]") {
   // The untextured scene's wall is one grey: a box on it (left of the grey cylinder) has
   // nothing the classifier can tell from the windows beside it. Its score there stays
   // near 0.5, above the lost threshold, so only PeakContrast can catch it. In 3D and in
@@ -416,7 +417,7 @@ TEST_CASE("best reports a first box on a plain wall lost within a few frames", "
   src->~SyntheticSource();
 }
 
-TEST_CASE("best's cylinder follows a target whose width changes as it turns", "[core][e2e]") {
+TEST_CASE("best's cylinder follows a target whose width changes as it turns", "[core][e2e][occlude]") {
   // A box yawing 90 degrees: 107 px wide side-on, 38 px end-on at frame 149. From frame
   // 100 (yaw 60 degrees, width 0.7x) a cylinder of the first frame's size is too wide
   // (scene and tracker seed 3: fixed size ~0.44 mean overlap there, measured ~0.87).
@@ -433,7 +434,7 @@ TEST_CASE("best's cylinder follows a target whose width changes as it turns", "[
   CHECK(s.allocations == 0);
 }
 
-TEST_CASE("best's cylinder grows back when a flat target turns face-on again", "[core][e2e]") {
+TEST_CASE("best's cylinder grows back when a flat target turns face-on again", "[core][e2e][occlude]") {
   // A flat box turns from face-on (68 px) to 78 degrees (26 px, frame ~80) and back to
   // face-on by frame 149. Once the estimate had fallen to under half the target's width,
   // the silhouette's default window could not hold it, and the box stayed ~26 px wide
