@@ -1,3 +1,7 @@
+// The cuetrack program as a few named steps: check the command line, open the source,
+// resolve the start box, open the outputs, wire the pipeline, run the loop, close the
+// outputs and print the summary. runCuetrack() only calls them in order; each says why
+// it would end the run, with the exit code the tests and the service rely on.
 #include "App.hpp"
 
 #include <unistd.h>
@@ -10,6 +14,7 @@
 #include "PacedSource.hpp"
 #include "Pipeline.hpp"
 #include "PrefetchedSource.hpp"
+#include "RunReport.hpp"
 #include "RunSummary.hpp"
 #include "SerialLink.hpp"
 #include "Sources.hpp"
@@ -28,30 +33,27 @@
 namespace cuetrack::app {
 namespace {
 
-// Where the target comes from, for the banner.
-void describeTarget(const AppOptions& opt, const char* groundTruthName, char* out, size_t n) {
-  const bool live = opt.source && std::strncmp(opt.source, "kinect", 6) == 0;
-  const char* orStart = opt.serialPath || opt.mavlinkUdp ? ", or a START on the link" : "";
-  if (opt.select) {
-    std::snprintf(out, n, "the box dragged with --select");
-  } else if (opt.hasBox) {
-    std::snprintf(out, n, "--box %g,%g,%g,%g", opt.box.x, opt.box.y, opt.box.w, opt.box.h);
-  } else if (opt.useGroundTruth && !live) {
-    std::snprintf(out, n, "ground truth (%.400s) where the target first shows%s", groundTruthName,
-                  orStart);
-  } else if (opt.serialPath || opt.mavlinkUdp) {
-    std::snprintf(out, n, "waiting for a START on the link (or give --box / --select)");
-  } else {
-    std::snprintf(out, n, "none: nothing will be tracked (give --box X,Y,W,H or --select)");
-  }
-}
+// A step's "no exit code yet": the run goes on.
+constexpr int kGoOn = -1;
 
-}  // namespace
+// What the run writes to (static storage, like every big object of the app).
+struct Outputs {
+  platform::FdTrackSink fileSink;
+  platform::FdTrackSink stdoutSink;
+  platform::SerialPort port;
+  platform::UdpSocket udp;
+  VideoOut video;
+  bool videoOk = false;                 // --video given and no write failed yet
+  bool stdoutIsTerminal = false;        // no line per frame there unless --stdout
+  platform::TrackLink* link = nullptr;  // serial or MAVLink, if any
+};
 
-int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
-  platform::StderrReporter reporter("cuetrack");
+// The command line and all that can be refused before anything opens (exit 2): a bad
+// option, a readable signing key, an output that is also an input, a baud rate, a view or
+// a camera this build lacks. Fills key with the MAVLink signing key when one is given.
+int checkCommandLine(int argc, char** argv, AppOptions& opt, uint8_t (&key)[32],
+                     platform::Reporter& reporter) {
   char err[512] = "";
-  AppOptions opt;
   switch (parseOptions(argc, argv, &opt, err, sizeof err)) {
     case ParseResult::Help:
       std::fputs(usageText().c_str(), stdout);
@@ -63,9 +65,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       break;
   }
   // The signing key, before anything runs: a key others can read is refused (exit 2).
-  static uint8_t mavlinkKey[32];
-  if (opt.mavlinkKey &&
-      !platform::readKeyFile(opt.mavlinkKey, mavlinkKey, sizeof mavlinkKey, err, sizeof err)) {
+  if (opt.mavlinkKey && !platform::readKeyFile(opt.mavlinkKey, key, sizeof key, err, sizeof err)) {
     std::snprintf(err + std::strlen(err), sizeof err - std::strlen(err), " (--mavlink-key)");
     reporter.report(err);
     return kExitUsage;
@@ -101,21 +101,15 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
     reporter.report("--wait-camera: this build has no Kinect driver (libfreenect missing)");
     return kExitUsage;
   }
-  platform::installStopSignals();
+  return kGoOn;
+}
 
-  static platform::MonotonicClock clock;
-  if (!tracker.configure(opt.preset, opt.seed, &clock)) {
-    std::snprintf(err, sizeof err, "--config %s: unknown preset (best, 1.1-1.4, 2.1-2.5)",
-                  opt.preset);
-    reporter.report(err);
-    return kExitUsage;
-  }
-
-  static platform::MonotonicSleeper sleeper;
-  FrameSource* source = nullptr;
+// The frame source; nullptr once the reason is reported. With --wait-camera the camera
+// may come later: the run starts without it (outputs open, the link served), and next()
+// looks for it every second.
+FrameSource* openFrameSource(AppOptions& opt, const Clock& clock, platform::Sleeper& sleeper,
+                             platform::Reporter& reporter) {
   if (opt.waitCamera) {
-    // The camera may come later: the run starts without it (outputs open, the serial
-    // link served), and next() looks for it every second.
     static WaitingSource waiting(
         [](void* ctx, char* e, size_t n) {
           const AppOptions& o = *static_cast<const AppOptions*>(ctx);
@@ -123,93 +117,96 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
         },
         &opt, clock, sleeper, reporter, &platform::stopRequested);
     waiting.tryOpen();
-    source = &waiting;
-  } else {
-    source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err, opt.skipBadFrames);
-    if (!source) {
-      reporter.report(err);
-      return kExitSource;
-    }
+    return &waiting;
   }
-  static FrameSlot slot;  // ~1.5 MiB
-  static LiveView view;
-  if (opt.show && !view.start(err, sizeof err)) {
+  char err[512] = "";
+  FrameSource* source =
+      openSource(opt.source, opt.seed, opt.frames, err, sizeof err, opt.skipBadFrames);
+  if (!source) reporter.report(err);
+  return source;
+}
+
+// --select and --snapshot work on the first frame, read here into the pipeline's slot:
+// --snapshot writes it and ends the run (exit 0), --select sets opt.box from the drag and
+// hands the source on as one whose first frame is that slot.
+int resolveStartBox(AppOptions& opt, FrameSource*& source, FrameSlot& slot, LiveView& view,
+                    platform::Reporter& reporter) {
+  if (!opt.select && !opt.snapshotPath) return kGoOn;
+  char err[512] = "";
+  const ReadStatus rs = source->next(slot);
+  if (rs != ReadStatus::Ok) {
+    if (rs == ReadStatus::Error) {
+      reporter.report(source->error());
+    } else {
+      std::snprintf(err, sizeof err, "%s: no frame to %s (the source is empty)",
+                    opt.source ? opt.source : source->name(),
+                    opt.select ? "select on" : "snapshot");
+      reporter.report(err);
+    }
+    return kExitSource;
+  }
+  if (opt.snapshotPath) {
+    if (!writeSnapshot(slot.frame(), opt.snapshotPath, err, sizeof err)) {
+      reporter.report(err);
+      return kExitOutput;
+    }
+    std::snprintf(err, sizeof err,
+                  "wrote %s: frame %d, %dx%d px, grid every %d px; read the target's box off it "
+                  "and run with --box X,Y,W,H",
+                  opt.snapshotPath, slot.index, slot.rgb.width(), slot.rgb.height(),
+                  kSnapshotGridPx);
+    reporter.report(err);
+    return kExitOk;
+  }
+  if (!(opt.show ? view.pick(slot.frame(), &opt.box, err, sizeof err)
+                 : pickBox(slot.frame(), &opt.box, err, sizeof err))) {
     reporter.report(err);
     return kExitUsage;
   }
-  if (opt.select || opt.snapshotPath) {
-    // The first frame, read into the pipeline's slot: the pipeline then starts on it.
-    const ReadStatus rs = source->next(slot);
-    if (rs != ReadStatus::Ok) {
-      if (rs == ReadStatus::Error) {
-        reporter.report(source->error());
-      } else {
-        std::snprintf(err, sizeof err, "%s: no frame to %s (the source is empty)",
-                      opt.source ? opt.source : source->name(),
-                      opt.select ? "select on" : "snapshot");
-        reporter.report(err);
-      }
-      return kExitSource;
-    }
-    if (opt.snapshotPath) {
-      if (!writeSnapshot(slot.frame(), opt.snapshotPath, err, sizeof err)) {
-        reporter.report(err);
-        return kExitOutput;
-      }
-      std::snprintf(err, sizeof err,
-                    "wrote %s: frame %d, %dx%d px, grid every %d px; read the target's box off it "
-                    "and run with --box X,Y,W,H",
-                    opt.snapshotPath, slot.index, slot.rgb.width(), slot.rgb.height(),
-                    kSnapshotGridPx);
-      reporter.report(err);
-      return kExitOk;
-    }
-    if (!(opt.show ? view.pick(slot.frame(), &opt.box, err, sizeof err)
-                   : pickBox(slot.frame(), &opt.box, err, sizeof err))) {
-      reporter.report(err);
-      return kExitUsage;
-    }
-    opt.hasBox = true;
-    std::snprintf(err, sizeof err, "picked --box %g,%g,%g,%g (give it to later runs)", opt.box.x,
-                  opt.box.y, opt.box.w, opt.box.h);
-    reporter.report(err);
-    static PrefetchedSource prefetched(*source);
-    source = &prefetched;
-  }
-  static PacedSource paced(*source, clock, sleeper, &platform::stopRequested);
-  if (opt.realtime) source = &paced;  // a live Kinect is paced by its own clock anyway
+  opt.hasBox = true;
+  std::snprintf(err, sizeof err, "picked --box %g,%g,%g,%g (give it to later runs)", opt.box.x,
+                opt.box.y, opt.box.w, opt.box.h);
+  reporter.report(err);
+  static PrefetchedSource prefetched(*source);
+  source = &prefetched;
+  return kGoOn;
+}
 
-  static platform::FdTrackSink fileSink;
-  static platform::FdTrackSink stdoutSink;
-  static platform::SerialPort port;
-  if (opt.outPath && !fileSink.openFile(opt.outPath, platform::TextFormat::Csv)) {
-    reporter.report(fileSink.error());
+// The CSV file, the serial port, the UDP socket and the video, opened before the first
+// frame (exit 1 when one cannot be).
+int openOutputs(const AppOptions& opt, const FrameSource& source, Outputs& out,
+                platform::Reporter& reporter) {
+  char err[512] = "";
+  if (opt.outPath && !out.fileSink.openFile(opt.outPath, platform::TextFormat::Csv)) {
+    reporter.report(out.fileSink.error());
     return kExitOutput;
   }
-  if (opt.serialPath && !port.open(opt.serialPath, opt.baud)) {
-    reporter.report(port.error());
+  if (opt.serialPath && !out.port.open(opt.serialPath, opt.baud)) {
+    reporter.report(out.port.error());
     return kExitOutput;
   }
-  if (opt.serialPath && port.notice()[0] != '\0') reporter.report(port.notice());
-  static platform::UdpSocket udp;
-  if (opt.mavlinkUdp && !udp.open(opt.mavlinkUdp)) {
-    reporter.report(udp.error());
+  if (opt.serialPath && out.port.notice()[0] != '\0') reporter.report(out.port.notice());
+  if (opt.mavlinkUdp && !out.udp.open(opt.mavlinkUdp)) {
+    reporter.report(out.udp.error());
     return kExitOutput;
   }
-  if (opt.mavlinkUdp && !udp.countsDrops()) {  // said once: rx-errors cannot show them
+  if (opt.mavlinkUdp && !out.udp.countsDrops()) {  // said once: rx-errors cannot show them
     std::snprintf(err, sizeof err,
                   "%s: this system does not report the datagrams it drops (SO_RXQ_OVFL); "
                   "rx-errors will not count them",
-                  udp.name());
+                  out.udp.name());
     reporter.report(err);
   }
-
-  static VideoOut video;
-  bool videoOk = opt.videoPath != nullptr;
-  if (opt.videoPath && !video.open(opt.videoPath, source->nominalFps(), err, sizeof err)) {
+  out.videoOk = opt.videoPath != nullptr;
+  if (opt.videoPath && !out.video.open(opt.videoPath, source.nominalFps(), err, sizeof err)) {
     reporter.report(err);
     return kExitOutput;
   }
+  return kGoOn;
+}
+
+PipelineOptions pipelineOptions(const AppOptions& opt, const FrameSource& source,
+                                const char* groundTruthName) {
   PipelineOptions po;
   po.maxFrames = opt.frames;
   po.hasBox = opt.hasBox;
@@ -217,23 +214,17 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   po.useGroundTruth = opt.useGroundTruth;
   po.statusPeriodUs = opt.quiet ? 0 : 1000000;
   po.droppedFrames = droppedFrames;
-  static char groundTruthName[512];
-  describeGroundTruth(opt.source, groundTruthName, sizeof groundTruthName);
-  po.sourceName = opt.source ? opt.source : source->name();
+  po.sourceName = opt.source ? opt.source : source.name();
   po.groundTruthName = groundTruthName;
   po.warnPoorTarget = true;
-  const char* linkName = opt.mavlinkUdp ? "udp" : "serial";  // as status and final lines say
-  po.linkName = linkName;
-  Pipeline pipeline(*source, slot, tracker, clock, reporter, po);
-  if (opt.outPath) pipeline.addSink(&fileSink);
-  // One line per frame floods a terminal: there, only with --stdout (pipes get them).
-  const bool defaultOutput = !opt.outPath && !opt.serialPath && !opt.mavlinkUdp;
-  const bool stdoutIsTerminal = isatty(STDOUT_FILENO) == 1;
-  if (opt.forceStdout || (defaultOutput && !stdoutIsTerminal)) {
-    stdoutSink.attachStdout(platform::TextFormat::Line);
-    pipeline.addSink(&stdoutSink);
-  }
-  static platform::TrackLink* link = nullptr;
+  po.linkName = linkName(opt);
+  return po;
+}
+
+// The link the tracks go out on and the commands come in by: MAVLink (serial or UDP),
+// our serial protocol, or none.
+platform::TrackLink* makeLink(const AppOptions& opt, const uint8_t (&key)[32], Outputs& out,
+                              const Clock& clock, platform::Reporter& reporter) {
   if (opt.protocol == Protocol::Mavlink) {
     platform::mavlink::LinkConfig mc;
     mc.sysId = static_cast<uint8_t>(opt.mavSysId);
@@ -247,56 +238,63 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       mc.signing = true;
       mc.signingTimestamp = platform::signingTimestampNow();
     }
-    std::memcpy(mc.key.bytes, mavlinkKey, sizeof mc.key.bytes);
+    std::memcpy(mc.key.bytes, key, sizeof mc.key.bytes);
     mc.acceptSysIdCount = opt.acceptSysIdCount;
     for (int i = 0; i < opt.acceptSysIdCount; ++i)
       mc.acceptSysIds[i] = static_cast<uint8_t>(opt.acceptSysIds[i]);
-    platform::ByteStream& stream = opt.mavlinkUdp ? static_cast<platform::ByteStream&>(udp) : port;
+    platform::ByteStream& stream =
+        opt.mavlinkUdp ? static_cast<platform::ByteStream&>(out.udp) : out.port;
     static platform::mavlink::MavlinkLink mavlinkLink(stream, clock, reporter, mc);
-    link = &mavlinkLink;
-  } else if (opt.serialPath) {
-    static SerialLink serialLink(port, clock, reporter);
-    link = &serialLink;
+    return &mavlinkLink;
   }
-  if (link) pipeline.attachLink(link);
-
-  if (!opt.quiet) {
-    char sourceWhy[256], target[512], banner[1200];
-    describeSourceChoice(opt.source, sourceWhy, sizeof sourceWhy);
-    describeTarget(opt, groundTruthName, target, sizeof target);
-    std::snprintf(
-        banner, sizeof banner, "source %s | target: %s | config %s, seed %llu | output: %s%s",
-        sourceWhy, target, opt.preset, static_cast<unsigned long long>(opt.seed),
-        opt.serialPath                           ? opt.serialPath
-        : opt.outPath                            ? opt.outPath
-        : opt.mavlinkUdp                         ? opt.mavlinkUdp
-        : (opt.forceStdout || !stdoutIsTerminal) ? "stdout, one line per frame"
-                                                 : "the summary below (--stdout: a line per frame)",
-        opt.show ? " | window: --show" : "");
-    reporter.report(banner);
+  if (opt.serialPath) {
+    static SerialLink serialLink(out.port, clock, reporter);
+    return &serialLink;
   }
+  return nullptr;
+}
 
-  RunSummary summary;
-  bool windowQuit = false;
+// The sinks and the link on the pipeline.
+void attachOutputs(const AppOptions& opt, const uint8_t (&key)[32], Pipeline& pipeline,
+                   Outputs& out, const Clock& clock, platform::Reporter& reporter) {
+  if (opt.outPath) pipeline.addSink(&out.fileSink);
+  // One line per frame floods a terminal: there, only with --stdout (pipes get them).
+  const bool defaultOutput = !opt.outPath && !opt.serialPath && !opt.mavlinkUdp;
+  out.stdoutIsTerminal = isatty(STDOUT_FILENO) == 1;
+  if (opt.forceStdout || (defaultOutput && !out.stdoutIsTerminal)) {
+    out.stdoutSink.attachStdout(platform::TextFormat::Line);
+    pipeline.addSink(&out.stdoutSink);
+  }
+  out.link = makeLink(opt, key, out, clock, reporter);
+  if (out.link) pipeline.attachLink(out.link);
+}
+
+// The frames, one pipeline step at a time, until the source ends, a STOP, a signal or the
+// window's q; each tracked frame also goes to the summary, the video and the window.
+RunEnd runLoop(const AppOptions& opt, Pipeline& pipeline, const FrameSlot& slot, LiveView& view,
+               Outputs& out, RunSummary& summary, const Clock& clock,
+               platform::Reporter& reporter) {
+  char err[512] = "";
+  RunEnd end;
   const uint64_t runStartUs = clock.nowUs();
-  StepResult r = StepResult::Continue;
+  StepResult& r = end.result;
   while (r == StepResult::Continue && !platform::stopRequested()) {
     const uint32_t before = pipeline.frames();
     r = pipeline.step();
     if (pipeline.frames() == before) continue;  // no frame this step
     const ctp_track_t& t = pipeline.lastTrack();
     summary.add(t, slot.hasGroundTruth ? &slot.groundTruth : nullptr);
-    if (!opt.show && !videoOk) continue;
+    if (!opt.show && !out.videoOk) continue;
     ViewTrack vt;
     vt.frameIndex = static_cast<uint32_t>(slot.index);
     vt.state = t.state;
     vt.box = Box{static_cast<float>(t.box_px[0]), static_cast<float>(t.box_px[1]),
                  static_cast<float>(t.box_px[2]), static_cast<float>(t.box_px[3])};
     vt.confidence = static_cast<float>(t.confidence) / 65535.f;
-    if (videoOk && !video.write(slot.frame(), vt, err, sizeof err)) {
+    if (out.videoOk && !out.video.write(slot.frame(), vt, err, sizeof err)) {
       // Like any output: said once, tracking goes on, the exit code tells.
       reporter.report(err);
-      videoOk = false;
+      out.videoOk = false;
     }
     if (!opt.show) continue;
     view.push(slot.frame(), vt);
@@ -312,101 +310,120 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
       reporter.report(err);
     }
     if (view.quitRequested()) {
-      windowQuit = true;
+      end.windowQuit = true;
       break;
     }
   }
-  const uint64_t runUs = clock.nowUs() - runStartUs;
-  pipeline.finish();
-  // A source that ended before its first frame gave nothing to track: not a success.
-  const bool empty = r == StepResult::Done && pipeline.frames() == 0 && !platform::stopRequested();
-  if (empty) {
-    std::snprintf(err, sizeof err, "%s: no decodable frame%s",
-                  opt.source ? opt.source : source->name(),
-                  source->skippedFrames() > 0 ? " (every one damaged, skipped)" : " (it is empty)");
-    reporter.report(err);
-  }
-  view.close();
-  if (opt.videoPath && videoOk) {
-    if (video.close(err, sizeof err)) {
-      std::snprintf(err, sizeof err, "wrote %s: %u frames", opt.videoPath,
-                    static_cast<unsigned>(video.frames()));
-    } else {
-      videoOk = false;
-    }
-    reporter.report(err);
-  }
-  bool closeFailed = false;
-  if (opt.outPath && !fileSink.close()) {  // the rows may sit in the page cache until here
-    reporter.report(fileSink.error());
-    closeFailed = true;
-  }
+  end.runUs = clock.nowUs() - runStartUs;
+  return end;
+}
 
-  if (link && !link->drain(1000)) {
-    std::snprintf(err, sizeof err, "%s: could not send the last messages within 1 s", linkName);
+// The video read back, the CSV flushed, the link's last messages sent. False when the
+// CSV could not be closed (its rows may sit in the page cache until here).
+bool closeOutputs(const AppOptions& opt, Outputs& out, platform::Reporter& reporter) {
+  char err[512] = "";
+  if (opt.videoPath && out.videoOk) {
+    if (out.video.close(err, sizeof err)) {
+      std::snprintf(err, sizeof err, "wrote %s: %u frames", opt.videoPath,
+                    static_cast<unsigned>(out.video.frames()));
+    } else {
+      out.videoOk = false;
+    }
     reporter.report(err);
   }
-  if (!opt.quiet) {
-    int n = std::snprintf(err, sizeof err, "stopped after %u frames (%s)",
-                          static_cast<unsigned>(pipeline.frames()),
-                          platform::stopRequested()      ? "signal"
-                          : windowQuit                   ? "window closed"
-                          : r == StepResult::Stopped     ? "STOP command"
-                          : r == StepResult::Done        ? "end of source or --frames"
-                          : r == StepResult::OutputsGone ? "every output failed"
-                                                         : "error");
-    // Damaged frames skipped (--skip-bad-frames) never reached the tracker: say how many.
-    if (source->skippedFrames() > 0 && n > 0 && static_cast<size_t>(n) < sizeof err)
-      n += std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
-                         "; %d damaged frames skipped", source->skippedFrames());
-    // What the link managed: a peer that stopped reading shows as tx-dropped.
-    if (link && n > 0 && static_cast<size_t>(n) < sizeof err) {
-      const platform::LinkStats& s = link->stats();
-      std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
-                    "; %s sent %u tx-dropped %u rx %u rx-errors %u refused %u", linkName,
-                    static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
-                    static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors),
-                    static_cast<unsigned>(s.rxRefused));
-    }
-    reporter.report(err);
-    summary.format(runUs, err, sizeof err);
-    if (opt.show) {
-      const size_t used = std::strlen(err);
-      std::snprintf(err + used, sizeof err - used, ", window dropped %llu of them",
-                    static_cast<unsigned long long>(view.droppedFrames()));
-    }
-    reporter.report(err);
-    std::snprintf(err, sizeof err,
-                  "next: %s --show --realtime (watch it) | %s --select (pick your own target) | "
-                  "docs/first-hour.md",
-                  argv[0], argv[0]);
-    reporter.report(err);
-  } else {
-    // Even --quiet: frames and messages are not lost without a word.
-    if (source->skippedFrames() > 0) {
-      std::snprintf(err, sizeof err, "%d damaged frames skipped", source->skippedFrames());
-      reporter.report(err);
-    }
-    if (link && (link->stats().txDropped > 0 || link->stats().rxErrors > 0 ||
-                 link->stats().rxRefused > 0)) {
-      const platform::LinkStats& s = link->stats();
-      std::snprintf(err, sizeof err, "%s sent %u tx-dropped %u rx %u rx-errors %u refused %u",
-                    linkName, static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
-                    static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors),
-                    static_cast<unsigned>(s.rxRefused));
-      reporter.report(err);
-    }
+  bool closed = true;
+  if (opt.outPath && !out.fileSink.close()) {
+    reporter.report(out.fileSink.error());
+    closed = false;
   }
-  if (empty) return kExitSource;
-  switch (r) {
+  if (out.link && !out.link->drain(1000)) {
+    std::snprintf(err, sizeof err, "%s: could not send the last messages within 1 s",
+                  linkName(opt));
+    reporter.report(err);
+  }
+  return closed;
+}
+
+// A source that ended before its first frame gave nothing to track: not a success. True
+// (and said) then.
+bool reportEmptySource(const AppOptions& opt, const FrameSource& source, const Pipeline& pipeline,
+                       const RunEnd& end, platform::Reporter& reporter) {
+  if (end.result != StepResult::Done || pipeline.frames() != 0 || platform::stopRequested())
+    return false;
+  char err[512];
+  std::snprintf(err, sizeof err, "%s: no decodable frame%s",
+                opt.source ? opt.source : source.name(),
+                source.skippedFrames() > 0 ? " (every one damaged, skipped)" : " (it is empty)");
+  reporter.report(err);
+  return true;
+}
+
+// The exit code of a run that had frames: a source or box failure first, then any output.
+int exitCode(const RunEnd& end, bool outputFailed) {
+  switch (end.result) {
     case StepResult::SourceError:
       return kExitSource;
     case StepResult::BoxRejected:
       return kExitBoxRejected;
     default:
-      return pipeline.outputFailed() || closeFailed || (opt.videoPath && !videoOk) ? kExitOutput
-                                                                                   : kExitOk;
+      return outputFailed ? kExitOutput : kExitOk;
   }
+}
+
+}  // namespace
+
+int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
+  platform::StderrReporter reporter("cuetrack");
+  AppOptions opt;
+  static uint8_t mavlinkKey[32];
+  if (const int code = checkCommandLine(argc, argv, opt, mavlinkKey, reporter); code != kGoOn)
+    return code;
+  platform::installStopSignals();
+
+  static platform::MonotonicClock clock;
+  if (!tracker.configure(opt.preset, opt.seed, &clock)) {
+    char err[512];
+    std::snprintf(err, sizeof err, "--config %s: unknown preset (best, 1.1-1.4, 2.1-2.5)",
+                  opt.preset);
+    reporter.report(err);
+    return kExitUsage;
+  }
+
+  static platform::MonotonicSleeper sleeper;
+  FrameSource* source = openFrameSource(opt, clock, sleeper, reporter);
+  if (!source) return kExitSource;
+  static FrameSlot slot;  // ~1.5 MiB
+  static LiveView view;
+  char err[512] = "";
+  if (opt.show && !view.start(err, sizeof err)) {
+    reporter.report(err);
+    return kExitUsage;
+  }
+  if (const int code = resolveStartBox(opt, source, slot, view, reporter); code != kGoOn)
+    return code;
+  static PacedSource paced(*source, clock, sleeper, &platform::stopRequested);
+  if (opt.realtime) source = &paced;  // a live Kinect is paced by its own clock anyway
+
+  static Outputs out;
+  if (const int code = openOutputs(opt, *source, out, reporter); code != kGoOn) return code;
+  static char groundTruthName[512];
+  describeGroundTruth(opt.source, groundTruthName, sizeof groundTruthName);
+  Pipeline pipeline(*source, slot, tracker, clock, reporter,
+                    pipelineOptions(opt, *source, groundTruthName));
+  attachOutputs(opt, mavlinkKey, pipeline, out, clock, reporter);
+  if (!opt.quiet) printBanner(opt, groundTruthName, out.stdoutIsTerminal, reporter);
+
+  RunSummary summary;
+  const RunEnd end = runLoop(opt, pipeline, slot, view, out, summary, clock, reporter);
+  pipeline.finish();
+  const bool empty = reportEmptySource(opt, *source, pipeline, end, reporter);
+  view.close();
+  const bool closed = closeOutputs(opt, out, reporter);
+  printSummary(opt, argv[0], pipeline, *source, out.link, summary, end, view.droppedFrames(),
+               reporter);
+
+  if (empty) return kExitSource;
+  return exitCode(end, pipeline.outputFailed() || !closed || (opt.videoPath && !out.videoOk));
 }
 
 }  // namespace cuetrack::app

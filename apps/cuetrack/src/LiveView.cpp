@@ -1,207 +1,31 @@
-// View.hpp on OpenCV's highgui. Every highgui call of the live window happens on its own
-// thread; the tracker's thread only copies pixels into the mailbox.
-#include <dlfcn.h>
-#include <unistd.h>
+// The live window on OpenCV's highgui. Every highgui call of the window happens on its own
+// thread; the tracker's thread only copies pixels into the mailbox. It wires the display
+// probe, the overlay and the picker together.
+#include "LiveView.hpp"
 
 #include <atomic>
-#include <cerrno>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <iostream>
 #include <mutex>
 #include <opencv2/core.hpp>
 #include <opencv2/highgui.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
-#include <string>
 #include <thread>
 #include <vector>
 
+#include "CvImage.hpp"
+#include "DisplayProbe.hpp"
 #include "LatestMailbox.hpp"
-#include "View.hpp"
+#include "Overlay.hpp"
+#include "Picker.hpp"
+#include "PickerCv.hpp"
 #include "cuetrack_proto.h"
 
 namespace cuetrack::app {
 namespace {
 
 constexpr const char* kWindow = "cuetrack";
-constexpr float kDepthFarMm = 5000.f;  // colour map range: the Kinect v1's useful depth
-constexpr int kStripPx = 44;           // status text under the image
-// No toolbar (Qt's zoom buttons): the image starts at the window's corner, 1:1.
-constexpr int kWindowFlags = cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL;
-
-cv::Mat toBgr(const RgbView& rgb) {
-  cv::Mat bgr(rgb.height, rgb.width, CV_8UC3);
-  for (int y = 0; y < rgb.height; ++y) {
-    const Rgb8* s = rgb.row(y);
-    uint8_t* d = bgr.ptr<uint8_t>(y);
-    for (int x = 0; x < rgb.width; ++x) {
-      d[3 * x] = s[x].b;
-      d[3 * x + 1] = s[x].g;
-      d[3 * x + 2] = s[x].r;
-    }
-  }
-  return bgr;
-}
-
-cv::Scalar stateColour(uint8_t state) {
-  switch (state) {
-    case CTP_STATE_TRACKING:
-      return {0, 220, 0};
-    case CTP_STATE_LOST:
-      return {0, 0, 255};
-    default:
-      return {0, 200, 255};  // searching, idle
-  }
-}
-
-// cv::selectROI prints its instructions on stdout, which carries the track lines: they
-// go to stderr instead.
-cv::Rect selectRoi(const char* window, const cv::Mat& image) {
-  std::fflush(stdout);
-  const int saved = dup(STDOUT_FILENO);
-  if (saved >= 0) dup2(STDERR_FILENO, STDOUT_FILENO);
-  const cv::Rect r = cv::selectROI(window, image, true, false);
-  std::cout.flush();
-  std::fflush(stdout);
-  if (saved >= 0) {
-    dup2(saved, STDOUT_FILENO);
-    close(saved);
-  }
-  return r;
-}
-
-cv::Rect toRect(const Box& b) {
-  return cv::Rect(cvRound(b.x), cvRound(b.y), cvRound(b.w), cvRound(b.h));
-}
-
-// The frame with the track drawn, the depth colour-mapped beside it (when given), and two
-// lines of text in a strip under them: the window's and the video's picture.
-cv::Mat overlay(const cv::Mat& bgr, const cv::Mat& depth16, const ViewTrack& track,
-                const char* line1, const char* line2) {
-  cv::Mat colour = bgr.clone();
-  const cv::Scalar c = stateColour(track.state);
-  const bool hasBox = track.state != CTP_STATE_IDLE && track.box.w > 0.f;
-  if (hasBox) cv::rectangle(colour, toRect(track.box), c, 2);
-  cv::Mat image = colour;
-  if (!depth16.empty()) {
-    cv::Mat d8, depthColour;
-    depth16.convertTo(d8, CV_8U, 255.0 / kDepthFarMm);
-    cv::applyColorMap(d8, depthColour, cv::COLORMAP_JET);
-    depthColour.setTo(cv::Scalar(0, 0, 0), depth16 == 0);  // no measurement: black
-    if (hasBox) cv::rectangle(depthColour, toRect(track.box), cv::Scalar(255, 255, 255), 2);
-    cv::hconcat(colour, depthColour, image);
-  }
-  cv::Mat canvas(image.rows + kStripPx, image.cols, CV_8UC3, cv::Scalar(32, 32, 32));
-  image.copyTo(canvas(cv::Rect(0, 0, image.cols, image.rows)));
-  cv::putText(canvas, line1, {6, image.rows + 17}, cv::FONT_HERSHEY_SIMPLEX, 0.5, c, 1,
-              cv::LINE_AA);
-  cv::putText(canvas, line2, {6, image.rows + 37}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
-              cv::Scalar(200, 200, 200), 1, cv::LINE_AA);
-  return canvas;
-}
-
-}  // namespace
-
-bool viewBuilt() {
-  return true;
-}
-
-bool displayAvailable(char* err, size_t errLen) {
-  const char* d = std::getenv("DISPLAY");
-  if (d == nullptr || *d == '\0') {
-    std::snprintf(err, errLen,
-                  "no display ($DISPLAY is not set): run it on a desktop, with ssh -X, or use "
-                  "--snapshot FILE.png");
-    return false;
-  }
-  // Qt aborts the process when it cannot reach the display: try it first, through the
-  // XCB library Qt's xcb plugin loads anyway (no build dependency of ours).
-  void* xcb = dlopen("libxcb.so.1", RTLD_NOW | RTLD_LOCAL);
-  if (xcb == nullptr) {
-    std::snprintf(err, errLen, "cannot load libxcb.so.1 to reach display %s", d);
-    return false;
-  }
-  using Connect = void* (*)(const char*, int*);
-  using HasError = int (*)(void*);
-  using Disconnect = void (*)(void*);
-  const auto connect = reinterpret_cast<Connect>(dlsym(xcb, "xcb_connect"));
-  const auto hasError = reinterpret_cast<HasError>(dlsym(xcb, "xcb_connection_has_error"));
-  const auto disconnect = reinterpret_cast<Disconnect>(dlsym(xcb, "xcb_disconnect"));
-  bool ok = false;
-  if (connect && hasError && disconnect) {
-    void* c = connect(d, nullptr);
-    ok = c != nullptr && hasError(c) == 0;
-    if (c) disconnect(c);
-  }
-  if (!ok) {
-    std::snprintf(err, errLen,
-                  "cannot connect to display %s ($DISPLAY): is the X server running, and may "
-                  "this user use it?",
-                  d);
-    return false;
-  }
-  return true;
-}
-
-namespace {
-// The picker's window and drag, on the thread that owns highgui.
-bool pickOn(const cv::Mat& bgr, Box* out, char* err, size_t errLen) {
-  constexpr const char* kPickWindow = "cuetrack: drag a box around the target, Enter to accept";
-  cv::namedWindow(kPickWindow, kWindowFlags);
-  const cv::Rect r = selectRoi(kPickWindow, bgr);
-  cv::destroyWindow(kPickWindow);
-  cv::waitKey(1);  // lets the window close before the run goes on
-  if (r.width <= 0 || r.height <= 0) {
-    std::snprintf(err, errLen, "--select: no box was drawn (cancelled)");
-    return false;
-  }
-  *out = Box{static_cast<float>(r.x), static_cast<float>(r.y), static_cast<float>(r.width),
-             static_cast<float>(r.height)};
-  return true;
-}
-}  // namespace
-
-bool pickBox(const Frame& frame, Box* out, char* err, size_t errLen) {
-  return pickOn(toBgr(frame.rgb), out, err, errLen);
-}
-
-bool writeSnapshot(const Frame& frame, const char* path, char* err, size_t errLen) {
-  cv::Mat img = toBgr(frame.rgb);
-  const cv::Scalar line(0, 255, 255), text(255, 255, 255), shadow(0, 0, 0);
-  auto label = [&](const char* s, cv::Point at) {
-    cv::putText(img, s, at, cv::FONT_HERSHEY_PLAIN, 0.8, shadow, 2, cv::LINE_AA);
-    cv::putText(img, s, at, cv::FONT_HERSHEY_PLAIN, 0.8, text, 1, cv::LINE_AA);
-  };
-  char s[16];
-  for (int x = kSnapshotGridPx; x < img.cols; x += kSnapshotGridPx) {
-    cv::line(img, {x, 0}, {x, img.rows - 1}, line, 1);
-    std::snprintf(s, sizeof s, "%d", x);
-    label(s, {x + 2, 10});
-  }
-  for (int y = kSnapshotGridPx; y < img.rows; y += kSnapshotGridPx) {
-    cv::line(img, {0, y}, {img.cols - 1, y}, line, 1);
-    std::snprintf(s, sizeof s, "%d", y);
-    label(s, {2, y - 2});
-  }
-  bool ok = false;
-  try {
-    ok = cv::imwrite(path, img);
-  } catch (const cv::Exception& e) {
-    std::snprintf(err, errLen, "--snapshot %s: %s", path, e.what());
-    return false;
-  }
-  if (!ok) {
-    std::snprintf(err, errLen,
-                  "--snapshot %s: cannot write (folder missing, no space, or not .png)", path);
-    return false;
-  }
-  return true;
-}
 
 // One frame for the window, copied out of the tracker's slot.
 struct ViewFrame {
@@ -211,6 +35,8 @@ struct ViewFrame {
   ViewTrack track;
   std::chrono::steady_clock::time_point pushedAt;
 };
+
+}  // namespace
 
 struct LiveView::Impl {
   LatestMailbox<ViewFrame> mailbox;
@@ -417,96 +243,6 @@ void LiveView::close() {
   _impl->closing = true;
   _impl->mailbox.close();
   _impl->thread.join();
-}
-
-struct VideoOut::Impl {
-  cv::VideoWriter writer;
-  std::string path;
-  int width = 0, height = 0;  // of the frames (the video is taller: the text strip)
-  bool depth = false;
-  double fps = 30.0;
-};
-
-VideoOut::VideoOut() : _impl(std::make_unique<Impl>()) {}
-VideoOut::~VideoOut() = default;
-
-bool VideoOut::open(const char* path, double fps, char* err, size_t errLen) {
-  const size_t n = std::strlen(path);
-  if (n < 5 || std::strcmp(path + n - 4, ".avi") != 0) {
-    std::snprintf(err, errLen, "--video %s: expected a .avi file (Motion JPEG)", path);
-    return false;
-  }
-  // Found out now, before the run: the writer itself only says "cannot open" (after
-  // trying GStreamer), and opens on the first frame, whose size it needs.
-  FILE* f = std::fopen(path, "wb");
-  if (!f) {
-    std::snprintf(err, errLen, "--video %s: cannot write: %s", path, std::strerror(errno));
-    return false;
-  }
-  std::fclose(f);
-  _impl->path = path;
-  _impl->fps = fps > 0.0 ? fps : 30.0;
-  return true;
-}
-
-bool VideoOut::write(const Frame& frame, const ViewTrack& track, char* err, size_t errLen) {
-  Impl& v = *_impl;
-  const cv::Mat bgr = toBgr(frame.rgb);
-  cv::Mat depth;
-  if (frame.hasDepth() && frame.depthMm.width == frame.rgb.width &&
-      frame.depthMm.height == frame.rgb.height) {
-    depth = cv::Mat(frame.depthMm.height, frame.depthMm.width, CV_16UC1,
-                    const_cast<uint16_t*>(frame.depthMm.data),
-                    static_cast<size_t>(frame.depthMm.stride) * sizeof(uint16_t));
-  }
-  if (!v.writer.isOpened()) {
-    v.width = frame.rgb.width;
-    v.height = frame.rgb.height;
-    v.depth = !depth.empty();
-    const cv::Size size((v.depth ? 2 : 1) * v.width, v.height + kStripPx);
-    // OpenCV's own Motion JPEG writer: no GStreamer or FFmpeg needed.
-    if (!v.writer.open(v.path, cv::CAP_OPENCV_MJPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
-                       v.fps, size)) {
-      std::snprintf(err, errLen, "--video %s: cannot write (folder missing or not writable)",
-                    v.path.c_str());
-      return false;
-    }
-  }
-  if (frame.rgb.width != v.width || frame.rgb.height != v.height) {
-    std::snprintf(err, errLen, "--video %s: frame %u is %dx%d, the video is %dx%d", v.path.c_str(),
-                  track.frameIndex, frame.rgb.width, frame.rgb.height, v.width, v.height);
-    return false;
-  }
-  // A frame without depth in a video with depth (or the reverse) keeps the video's layout.
-  if (v.depth && depth.empty()) depth = cv::Mat(v.height, v.width, CV_16UC1, cv::Scalar(0));
-  if (!v.depth) depth = cv::Mat();
-  char line1[160];
-  std::snprintf(line1, sizeof line1, "frame %u  %s  confidence %.2f", track.frameIndex,
-                ctp_state_name(track.state), track.confidence);
-  v.writer.write(
-      overlay(bgr, depth, track, line1,
-              v.depth ? "cuetrack   depth: near blue, far red, none black" : "cuetrack"));
-  ++_frames;
-  return true;
-}
-
-bool VideoOut::close(char* err, size_t errLen) {
-  if (!_impl->writer.isOpened()) return true;
-  _impl->writer.release();
-  // VideoWriter reports no write error (a full disk, a file size limit): read the video
-  // back, as cuetrack-synth does, and count the frames in it.
-  cv::VideoCapture cap;
-  uint32_t n = 0;
-  if (cap.open(_impl->path, cv::CAP_OPENCV_MJPEG) && cap.isOpened())
-    while (n < _frames && cap.grab()) ++n;
-  if (n != _frames) {
-    std::snprintf(err, errLen,
-                  "--video %s: only %u of %u frames written could be read back (disk full or "
-                  "write error)",
-                  _impl->path.c_str(), static_cast<unsigned>(n), static_cast<unsigned>(_frames));
-    return false;
-  }
-  return true;
 }
 
 }  // namespace cuetrack::app

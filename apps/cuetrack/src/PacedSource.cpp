@@ -3,8 +3,7 @@
 namespace cuetrack::app {
 
 ReadStatus PacedSource::next(FrameSlot& out) {
-  passIdleHookTo(_inner);
-  const ReadStatus st = _inner.next(out);
+  const ReadStatus st = forwardNext(out);
   if (st != ReadStatus::Ok) return st;
   const uint64_t nowUs = _clock.nowUs();
   // The first frame sets the schedule; a timestamp going back (a looped recording) too.

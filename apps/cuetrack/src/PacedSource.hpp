@@ -4,29 +4,22 @@
 // FrameSource::kIdleSliceMs, like the live Kinect, so the serial link stays served.
 #pragma once
 
+#include "ForwardingSource.hpp"
 #include "cuetrack/core/Clock.hpp"
-#include "cuetrack/drivers/FrameSource.hpp"
 #include "cuetrack/platform/Sleeper.hpp"
 
 namespace cuetrack::app {
 
-class PacedSource final : public FrameSource {
+class PacedSource final : public ForwardingSource {
  public:
   // stopRequested (may be null) is polled between slices too (SIGINT during a long gap).
   PacedSource(FrameSource& inner, const Clock& clock, platform::Sleeper& sleeper,
               bool (*stopRequested)() = nullptr)
-      : _inner(inner), _clock(clock), _sleeper(sleeper), _stopRequested(stopRequested) {}
+      : ForwardingSource(&inner), _clock(clock), _sleeper(sleeper), _stopRequested(stopRequested) {}
 
   ReadStatus next(FrameSlot& out) override;
-  const char* error() const override { return _inner.error(); }
-  const char* name() const override { return _inner.name(); }
-  int frameCount() const override { return _inner.frameCount(); }
-  double nominalFps() const override { return _inner.nominalFps(); }
-  int skippedFrames() const override { return _inner.skippedFrames(); }
-  bool awaitingDevice() const override { return _inner.awaitingDevice(); }
 
  private:
-  FrameSource& _inner;
   const Clock& _clock;
   platform::Sleeper& _sleeper;
   bool (*_stopRequested)();

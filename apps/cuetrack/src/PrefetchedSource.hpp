@@ -3,32 +3,24 @@
 // rest come from the inner source.
 #pragma once
 
-#include "cuetrack/drivers/FrameSource.hpp"
+#include "ForwardingSource.hpp"
 
 namespace cuetrack::app {
 
-class PrefetchedSource final : public FrameSource {
+class PrefetchedSource final : public ForwardingSource {
  public:
   // The caller read inner's first frame into the slot later passed to next().
-  explicit PrefetchedSource(FrameSource& inner) : _inner(inner) {}
+  explicit PrefetchedSource(FrameSource& inner) : ForwardingSource(&inner) {}
 
   ReadStatus next(FrameSlot& out) override {
     if (_pending) {
       _pending = false;
       return ReadStatus::Ok;  // out still holds it: nobody else writes the slot
     }
-    passIdleHookTo(_inner);
-    return _inner.next(out);
+    return forwardNext(out);
   }
-  const char* error() const override { return _inner.error(); }
-  const char* name() const override { return _inner.name(); }
-  int frameCount() const override { return _inner.frameCount(); }
-  double nominalFps() const override { return _inner.nominalFps(); }
-  int skippedFrames() const override { return _inner.skippedFrames(); }
-  bool awaitingDevice() const override { return _inner.awaitingDevice(); }
 
  private:
-  FrameSource& _inner;
   bool _pending = true;
 };
 

@@ -6,15 +6,15 @@
 namespace cuetrack::app {
 
 bool WaitingSource::tryOpen() {
-  if (_inner) return true;
+  if (inner()) return true;
   ++_attempts;
   _lastTryUs = _clock.nowUs();
   char why[sizeof _why] = "";
-  _inner = _open(_ctx, why, sizeof why);
+  setInner(_open(_ctx, why, sizeof why));
   char line[sizeof _why + 64];
-  if (_inner) {
+  if (inner()) {
     if (_waited) {
-      std::snprintf(line, sizeof line, "%s: found after %d attempts; frames flow", _inner->name(),
+      std::snprintf(line, sizeof line, "%s: found after %d attempts; frames flow", inner()->name(),
                     _attempts);
       _reporter.report(line);
     }
@@ -31,7 +31,7 @@ bool WaitingSource::tryOpen() {
 
 ReadStatus WaitingSource::next(FrameSlot& out) {
   constexpr uint64_t kSliceUs = static_cast<uint64_t>(kIdleSliceMs) * 1000u;
-  while (!_inner) {
+  while (!inner()) {
     if (_attempts > 0) {
       _sleeper.sleepUs(kSliceUs);
       if (idle() || (_stopRequested && _stopRequested())) return ReadStatus::End;
@@ -39,8 +39,7 @@ ReadStatus WaitingSource::next(FrameSlot& out) {
     }
     tryOpen();
   }
-  passIdleHookTo(*_inner);
-  return _inner->next(out);
+  return forwardNext(out);
 }
 
 }  // namespace cuetrack::app

@@ -10,14 +10,14 @@
 
 #include <cstddef>
 
+#include "ForwardingSource.hpp"
 #include "cuetrack/core/Clock.hpp"
-#include "cuetrack/drivers/FrameSource.hpp"
 #include "cuetrack/platform/Reporter.hpp"
 #include "cuetrack/platform/Sleeper.hpp"
 
 namespace cuetrack::app {
 
-class WaitingSource final : public FrameSource {
+class WaitingSource final : public ForwardingSource {
  public:
   // Opens the camera, or returns nullptr with one line in err (e.g. "no Kinect found").
   using Opener = FrameSource* (*)(void* ctx, char* err, size_t errLen);
@@ -26,7 +26,8 @@ class WaitingSource final : public FrameSource {
   // stopRequested (may be null) is polled between slices too (SIGINT while waiting).
   WaitingSource(Opener open, void* ctx, const Clock& clock, platform::Sleeper& sleeper,
                 platform::Reporter& reporter, bool (*stopRequested)() = nullptr)
-      : _open(open),
+      : ForwardingSource(nullptr),
+        _open(open),
         _ctx(ctx),
         _clock(clock),
         _sleeper(sleeper),
@@ -38,12 +39,10 @@ class WaitingSource final : public FrameSource {
   bool tryOpen();
 
   ReadStatus next(FrameSlot& out) override;
-  const char* error() const override { return _inner ? _inner->error() : _why; }
-  const char* name() const override { return _inner ? _inner->name() : "camera"; }
-  int frameCount() const override { return _inner ? _inner->frameCount() : -1; }
-  double nominalFps() const override { return _inner ? _inner->nominalFps() : 0.0; }
-  int skippedFrames() const override { return _inner ? _inner->skippedFrames() : 0; }
-  bool awaitingDevice() const override { return _inner == nullptr; }
+  // Until the camera is there: why not, "camera", and awaiting it; then the camera's.
+  const char* error() const override { return inner() ? ForwardingSource::error() : _why; }
+  const char* name() const override { return inner() ? ForwardingSource::name() : "camera"; }
+  bool awaitingDevice() const override { return inner() == nullptr; }
 
  private:
   Opener _open;
@@ -52,7 +51,6 @@ class WaitingSource final : public FrameSource {
   platform::Sleeper& _sleeper;
   platform::Reporter& _reporter;
   bool (*_stopRequested)();
-  FrameSource* _inner = nullptr;
   int _attempts = 0;
   bool _waited = false;  // a failure was reported: report the camera's arrival too
   uint64_t _lastTryUs = 0;
