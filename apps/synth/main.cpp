@@ -41,7 +41,7 @@ const char* kExitCodes =
 
 // The catalogue's rows for --help, a name and its summary a line.
 std::string sceneTable() {
-  std::string t = "\nscenes (--list: the names alone):\n";
+  std::string t = "\n\nscenes (--list: the names alone):\n";
   for (int i = 0; i < sceneCount(); ++i) {
     const SceneEntry* e = sceneEntry(i);
     std::string name = e->name;

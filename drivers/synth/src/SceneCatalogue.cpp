@@ -306,10 +306,9 @@ constexpr SceneEntry kScenes[] = {
     {"box", "a textured box moving (shape variety)", box},
     {"turn", "an elongated box turns 90 degrees from side-on to end-on: image width ~1/3", turn},
     {"fast", "target sweeping sideways at 40 px a frame, turning at the image's sides", fast},
-    {"lookalike",
-     "a same-textured cylinder 800 mm nearer pauses over the target: hidden for frames 65-85",
+    {"lookalike", "a nearer same-textured cylinder pauses over the target: hidden in 65-85",
      lookalike},
-    {"leave-return", "target out of view for frames 48-77, back from the left edge higher up",
+    {"leave-return", "target out of view in frames 48-77, back from the left edge higher up",
      leaveReturn},
     {"against-surface", "a bag slides along a board 40 mm behind it: little depth contrast",
      againstSurface},
@@ -318,7 +317,7 @@ constexpr SceneEntry kScenes[] = {
      flatTurn},
     {"edge-holes", "moving target whose depth drops out on a 3 px band along its silhouette",
      edgeHoles},
-    {"no-depth", "moving target whose surface reads no depth for frames 40-109: colour alone",
+    {"no-depth", "moving target whose surface reads no depth in frames 40-109: colour alone",
      noDepth},
 };
 constexpr int kNumScenes = static_cast<int>(sizeof(kScenes) / sizeof(kScenes[0]));
