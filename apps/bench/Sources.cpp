@@ -44,10 +44,9 @@ std::unique_ptr<FrameSource> openSequence(const SequenceArg& arg, const Options&
 #else
     const std::string scene = arg.spec.substr(6);
     SceneSpec spec;
-    if (!makeScene(scene.c_str(), &spec)) {
-      *err = arg.spec + ": unknown scene (";
-      for (int i = 0; i < sceneCount(); ++i) *err += std::string(i ? ", " : "") + sceneName(i);
-      *err += ")";
+    char why[512];
+    if (!makeScene(scene.c_str(), &spec, why, sizeof why)) {
+      *err = arg.spec + ": " + why;
       return nullptr;
     }
     if (options.maxFrames > 0 && options.maxFrames < spec.frameCount)

@@ -39,6 +39,19 @@ const char* kExitCodes =
     "exit codes: 0 ok, 1 write failed (stdout too), 2 bad arguments (an option given\n"
     "twice too)";
 
+// The catalogue's rows for --help, a name and its summary a line.
+std::string sceneTable() {
+  std::string t = "\n\nscenes (--list: the names alone):\n";
+  for (int i = 0; i < sceneCount(); ++i) {
+    const SceneEntry* e = sceneEntry(i);
+    std::string name = e->name;
+    name.resize(name.size() < 16 ? 16 : name.size() + 1, ' ');
+    t += "  " + name + e->summary + "\n";
+  }
+  t.pop_back();
+  return t;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,8 +61,8 @@ int main(int argc, char** argv) {
   uint64_t seed = 1;
   bool force = false, list = false;
   char err[600] = "";
-  cli::Command cmd("cuetrack-synth", kAbout, kExitCodes);
-  cmd.text("--scene", "NAME", "one of --list (default frames: 150 at 30 fps)", &scene);
+  cli::Command cmd("cuetrack-synth", std::string(kAbout) + sceneTable(), kExitCodes);
+  cmd.text("--scene", "NAME", "a scene below (default frames: 150 at 30 fps)", &scene);
   cmd.text("--out", "DIR", "the folder to write (the .avi file for --format avi)", &out);
   cmd.text("--format", "FORMAT", "fakenect (default), rgbd, otb or avi", &format);
   cmd.number("--frames", "N", "number of frames (1..100000)", 1, 100000, &frames);
@@ -69,8 +82,7 @@ int main(int argc, char** argv) {
   }
   if (scene.empty() || out.empty()) return cmd.fail("--scene and --out are required (see --help)");
   SceneSpec spec;
-  if (!makeScene(scene.c_str(), &spec))
-    return cmd.fail("unknown scene '" + scene + "' (--list shows them)");
+  if (!makeScene(scene.c_str(), &spec, err, sizeof err)) return cmd.fail(err);
   if (frames > 0) spec.frameCount = frames;
   spec.width = width;
   spec.height = height;

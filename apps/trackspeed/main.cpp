@@ -87,8 +87,11 @@ int main(int argc, char** argv) {
            &rgbOnly);
   if (const int rc = cmd.parse(argc, argv); rc >= 0) return rc;
   parsePreset(presetName.c_str(), &preset);  // checked as it was read
-  if (!makeScene(scene.c_str(), &spec))
-    return cmd.fail(cmd.badValue("--scene", scene, "unknown (cuetrack-synth --list)"));
+  if (!makeScene(scene.c_str(), &spec)) {
+    char names[512];
+    listSceneNames(", ", names, sizeof names);
+    return cmd.fail(cmd.badValue("--scene", scene, std::string("unknown (scenes: ") + names + ")"));
+  }
   spec.frameCount = kRendered;
   SyntheticSource* src = new (sourceStorage) SyntheticSource(spec, 1);
   TrackerConfig cfg = presetConfig(preset);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <set>
+#include <string>
 #include <vector>
 
 #include "AllocCounter.hpp"
@@ -64,6 +66,45 @@ TEST_CASE("Kinect raw <-> mm conversion round-trips within one raw step", "[synt
     // Half a raw step: dz/draw = 0.0030711 z^2 [m]
     const double halfStepMm = 0.5 * 0.0030711016 * (mm / 1000.0) * (mm / 1000.0) * 1000.0 + 1.0;
     CHECK(std::abs(back - mm) <= halfStepMm);
+  }
+}
+
+TEST_CASE("the scene catalogue: one row per name, an unknown name lists them", "[synth]") {
+  std::set<std::string> names;
+  for (int i = 0; i < sceneCount(); ++i) {
+    const SceneEntry* e = sceneEntry(i);
+    REQUIRE(e != nullptr);
+    INFO(e->name);
+    CHECK(std::string(e->name) == sceneName(i));
+    CHECK(names.insert(e->name).second);  // no name twice
+    CHECK(std::string(e->summary).size() > 10);
+    CHECK(std::string(e->summary).find('\n') == std::string::npos);
+    SceneSpec s;
+    REQUIRE(makeScene(e->name, &s));
+    CHECK(std::string(s.name) == e->name);
+    CHECK(s.numObjects >= 1);
+  }
+  CHECK(sceneEntry(-1) == nullptr);
+  CHECK(sceneEntry(sceneCount()) == nullptr);
+  SceneSpec s;
+  char err[512] = "";
+  CHECK_FALSE(makeScene("nope", &s, err, sizeof err));
+  std::string expected = "unknown scene 'nope' (scenes: ";
+  for (int i = 0; i < sceneCount(); ++i) expected += std::string(i ? ", " : "") + sceneName(i);
+  CHECK(std::string(err) == expected + ")");
+  CHECK(makeScene("box", &s, err, sizeof err));
+  // Each scene is its own: no two rows build the same spec (a missing builder once
+  // rendered as box).
+  SceneSpec a, b;
+  REQUIRE(makeScene("box", &a));
+  for (int i = 0; i < sceneCount(); ++i) {
+    if (std::string(sceneName(i)) == "box") continue;
+    INFO(sceneName(i));
+    REQUIRE(makeScene(sceneName(i), &b));
+    const SceneObject &x = a.objects[0], &y = b.objects[0];
+    CHECK_FALSE((x.shape == y.shape && x.radiusMm == y.radiusMm && x.heightMm == y.heightMm &&
+                 x.texture.seed == y.texture.seed && x.motion.startMm[0] == y.motion.startMm[0] &&
+                 x.motion.startMm[2] == y.motion.startMm[2]));
   }
 }
 

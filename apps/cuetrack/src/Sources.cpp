@@ -19,13 +19,9 @@ char gDefaultWhy[384] = "";  // why openSource(nullptr) chose what it chose
 
 FrameSource* openSynth(const char* scene, uint64_t seed, int frames, char* err, size_t errLen) {
   SceneSpec spec;
-  if (!makeScene(scene, &spec)) {
-    int n = std::snprintf(err, errLen, "synth:%s: unknown scene (known:", scene);
-    for (int i = 0; i < sceneCount() && n > 0 && static_cast<size_t>(n) < errLen; ++i) {
-      n += std::snprintf(err + n, errLen - static_cast<size_t>(n), " %s", sceneName(i));
-    }
-    if (n > 0 && static_cast<size_t>(n) < errLen)
-      std::snprintf(err + n, errLen - static_cast<size_t>(n), ")");
+  char why[512];
+  if (!makeScene(scene, &spec, why, sizeof why)) {
+    std::snprintf(err, errLen, "synth:%s: %s", scene, why);
     return nullptr;
   }
   if (frames > 0) spec.frameCount = frames;

@@ -46,14 +46,11 @@ bool walkIndex(const std::string& indexPath, char* err, size_t errLen, OnEntry&&
 bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
   _dir = dir;
   while (_dir.size() > 1 && _dir.back() == '/') _dir.pop_back();
+  restart(opt);
   _name = baseName(_dir);
-  _opt = opt;
   _files.clear();
   _seconds.clear();
   _frames.clear();
-  _next = _emitted = _skipped = 0;
-  _width = _height = 0;
-  _error[0] = '\0';
 
   const std::string indexPath = _dir + "/INDEX.txt";
   int lastDepth = -1;
@@ -98,18 +95,8 @@ bool FakenectReader::open(const char* dir, const SourceOptions& opt) {
              ? std::round(static_cast<double>(_frames.size() - 1) / span * 1000.0) / 1000.0
              : 0.0;
 
-  const std::string gtPath = opt.gtPath ? std::string(opt.gtPath) : _dir + "/groundtruth.txt";
-  if (opt.gtPath || rec::exists(gtPath.c_str())) {
-    if (!_gt.load(gtPath.c_str(), GtFormat::Bobot, _error, sizeof _error)) return false;
-    const int n = static_cast<int>(_frames.size());
-    // BoBoT convention: one box per frame, or none for the last frame.
-    if (_gt.count() != n && _gt.count() != n - 1) {
-      std::snprintf(_error, sizeof _error, "%s: %d ground-truth boxes for %d frames",
-                    gtPath.c_str(), _gt.count(), n);
-      return false;
-    }
-  }
-  return true;
+  return loadGroundTruth(_dir + "/groundtruth.txt", GtFormat::Bobot,
+                         static_cast<int>(_frames.size()), "frames");
 }
 
 bool checkFakenectReplayable(const char* dir, char* err, size_t errLen) {
@@ -168,7 +155,7 @@ void FakenectReader::entryPath(int entry, char* path, size_t len) const {
   std::snprintf(path, len, "%s/%s", _dir.c_str(), _files[static_cast<size_t>(entry)].c_str());
 }
 
-bool FakenectReader::readFrame(const Frame& f, FrameSlot& out) {
+bool FakenectReader::readPair(const Frame& f, FrameSlot& out) {
   char path[1024];
   char why[200];
   rec::PnmHeader h;
@@ -212,37 +199,16 @@ bool FakenectReader::readFrame(const Frame& f, FrameSlot& out) {
   return true;
 }
 
-ReadStatus FakenectReader::next(FrameSlot& out) {
-  for (;;) {
-    if (_next >= static_cast<int>(_frames.size())) return ReadStatus::End;
-    if (_opt.maxFrames >= 0 && _emitted >= _opt.maxFrames) return ReadStatus::End;
-    const int i = _next++;
-    const Frame& f = _frames[static_cast<size_t>(i)];
-    if (!readFrame(f, out)) {
-      if (_opt.skipBadFrames) {
-        ++_skipped;
-        continue;
-      }
-      return ReadStatus::Error;
-    }
-    if (_width == 0) {
-      _width = out.rgb.width();
-      _height = out.rgb.height();
-    }
-    out.index = i;
-    // open() made the times non-decreasing and at most kMaxIndexSeconds: 0..1e16 us.
-    out.timeUs = static_cast<uint64_t>(
-        std::llround((_seconds[static_cast<size_t>(f.rgbEntry)] - _t0) * 1e6));
-    // Kinect v1 intrinsics, scaled to the image (recordings carry none).
-    const float sx = static_cast<float>(out.rgb.width()) / 640.f;
-    const float sy = static_cast<float>(out.rgb.height()) / 480.f;
-    out.intrinsics = {kKinectV1Intrinsics.fx * sx, kKinectV1Intrinsics.fy * sy,
-                      kKinectV1Intrinsics.cx * sx, kKinectV1Intrinsics.cy * sy};
-    out.hasGroundTruth = _gt.boxAt(i, out.rgb.width(), out.rgb.height(), &out.groundTruth);
-    if (!out.hasGroundTruth) out.groundTruth = Box{};
-    ++_emitted;
-    return ReadStatus::Ok;
-  }
+RecordedReader::FrameRead FakenectReader::readFrame(int i, FrameSlot& out) {
+  if (i >= static_cast<int>(_frames.size())) return FrameRead::End;
+  return readPair(_frames[static_cast<size_t>(i)], out) ? FrameRead::Ok : FrameRead::Bad;
+}
+
+uint64_t FakenectReader::frameTimeUs(int i) const {
+  // open() made the times non-decreasing and at most kMaxIndexSeconds: 0..1e16 us.
+  const Frame& f = _frames[static_cast<size_t>(i)];
+  return static_cast<uint64_t>(
+      std::llround((_seconds[static_cast<size_t>(f.rgbEntry)] - _t0) * 1e6));
 }
 
 // ---------------------------------------------------------------------------

@@ -142,4 +142,14 @@ bool holdsRecording(const char* dir, char* err, size_t errLen) {
   return false;
 }
 
+std::string fileStem(const std::string& path) {
+  std::string p = path;
+  while (p.size() > 1 && p.back() == '/') p.pop_back();
+  const size_t slash = p.find_last_of('/');
+  std::string base = slash == std::string::npos ? p : p.substr(slash + 1);
+  const size_t dot = base.find_last_of('.');
+  if (dot != std::string::npos && dot > 0) base = base.substr(0, dot);
+  return base;
+}
+
 }  // namespace cuetrack::rec

@@ -10,7 +10,11 @@
 #include "cuetrack/drivers/RecordedParsers.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #if CUETRACK_HAVE_OPENCV
-#include "cuetrack/drivers/OpenCvSources.hpp"
+#include "cuetrack/drivers/BobotVideo.hpp"
+#include "cuetrack/drivers/OtbFolder.hpp"
+#include "cuetrack/drivers/RgbdFolder.hpp"
+#include "cuetrack/drivers/StillPan.hpp"
+#include "cuetrack/drivers/StillScene.hpp"
 #endif
 
 namespace cuetrack {
@@ -42,11 +46,9 @@ std::unique_ptr<FrameSource> openSynth(const std::string& spec, const SourceOpti
     }
   }
   SceneSpec s;
-  if (!makeScene(scene.c_str(), &s)) {
-    std::string names;
-    for (int i = 0; i < sceneCount(); ++i) names += std::string(i ? ", " : "") + sceneName(i);
-    std::snprintf(err, errLen, "%s: unknown scene '%s' (scenes: %s)", spec.c_str(), scene.c_str(),
-                  names.c_str());
+  char why[512];
+  if (!makeScene(scene.c_str(), &s, why, sizeof why)) {
+    std::snprintf(err, errLen, "%s: %s", spec.c_str(), why);
     return nullptr;
   }
   if (frames > 0) s.frameCount = frames;

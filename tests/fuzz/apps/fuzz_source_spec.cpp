@@ -1,6 +1,7 @@
 // The synth:<scene>[:frames] source spec, as cuetrack, cuetrack-bench and cuetrack-convert
-// take it: one line of error or a source of at least one frame. (pan: specs need OpenCV,
-// which the fuzz build has not; their numbers go through the same parseFrameCount.)
+// take it: one line of error or a source of at least one frame. (pan: and still: specs
+// open images through OpenCV, which the fuzz build has not; fuzz_recorded_specs fuzzes
+// their parsing.)
 #include <cstddef>
 #include <cstdint>
 #include <cstring>

@@ -15,50 +15,39 @@
 #include <string>
 #include <vector>
 
-#include "cuetrack/drivers/FrameSource.hpp"
-#include "cuetrack/drivers/GroundTruth.hpp"
 #include "cuetrack/drivers/KinectDepth.hpp"
-#include "cuetrack/drivers/SourceOptions.hpp"
+#include "cuetrack/drivers/RecordedReader.hpp"
 
 namespace cuetrack {
 
-class FakenectReader final : public FrameSource {
+class FakenectReader final : public RecordedReader {
  public:
   FakenectReader() = default;
   // Reads INDEX.txt (and groundtruth.txt); false with error() on failure.
   bool open(const char* dir, const SourceOptions& opt = {});
 
-  ReadStatus next(FrameSlot& out) override;
-  const char* error() const override { return _error; }
-  const char* name() const override { return _name.c_str(); }
   int frameCount() const override { return static_cast<int>(_frames.size()); }
   // Colour frames per second over the recording (first to last colour entry), 0 for one frame.
   double nominalFps() const override { return _fps; }
-  int skippedFrames() const override { return _skipped; }
 
  private:
   struct Frame {
     int rgbEntry;
     int depthEntry;  // -1: none
   };
-  bool readFrame(const Frame& f, FrameSlot& out);
+  FrameRead readFrame(int i, FrameSlot& out) override;
+  uint64_t frameTimeUs(int i) const override;
+  bool readPair(const Frame& f, FrameSlot& out);
   void entryPath(int entry, char* path, size_t len) const;
 
-  std::string _dir, _name;
+  std::string _dir;
   std::vector<std::string> _files;  // INDEX entries, in order
   std::vector<double> _seconds;
   std::vector<Frame> _frames;
-  GroundTruth _gt;
-  SourceOptions _opt{};
-  int _next = 0;
-  int _emitted = 0;
-  int _skipped = 0;
-  int _width = 0, _height = 0;  // of the first frame read: every frame must match
   double _t0 = 0.0;
   double _fps = 0.0;
   std::vector<uint8_t> _buf;
   kinect::RawToMmTable _rawToMm;
-  char _error[512] = "";
 };
 
 // Whether libfreenect's fakenect can replay the recording in `dir`: it exit()s on an INDEX

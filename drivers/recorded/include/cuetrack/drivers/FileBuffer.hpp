@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace cuetrack::rec {
@@ -34,5 +35,7 @@ bool makeDirectories(const char* path, char* err, size_t errLen);
 // groundtruth.txt, groundtruth_rect.txt or intrinsics.txt. The writers refuse such a
 // folder: frames of the old recording would mix with the new ones.
 bool holdsRecording(const char* dir, char* err, size_t errLen);
+// A path's last part without its extension ("a/b/seq.avi" -> "seq"; trailing '/' ignored).
+std::string fileStem(const std::string& path);
 
 }  // namespace cuetrack::rec

@@ -1,0 +1,19 @@
+// Stills read whole through OpenCV (host only, cuetrack_recorded_cv): 16-bit PNG depth
+// (as stored; the caller scales, e.g. TUM's value / 5 = mm) and any colour image OpenCV
+// reads. Sizes up to kMaxImageWidth x kMaxImageHeight; false with "path: reason" in err.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/Image.hpp"
+
+namespace cuetrack {
+
+bool loadDepthPng16(const char* path, FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight>& out,
+                    char* err, size_t errLen);
+bool loadColourImage(const char* path, FixedImage<Rgb8, kMaxImageWidth, kMaxImageHeight>& out,
+                     char* err, size_t errLen);
+
+}  // namespace cuetrack

@@ -1,0 +1,32 @@
+// OTB sequence folders (host only, cuetrack_recorded_cv): img/0001.jpg ..., colour only,
+// and groundtruth_rect.txt (x,y,w,h in 1-based pixels, one line per frame).
+#pragma once
+
+#include <string>
+
+#include "cuetrack/drivers/GroundTruth.hpp"
+#include "cuetrack/drivers/ImageFolderReader.hpp"
+
+namespace cuetrack {
+
+class OtbFolderReader final : public ImageFolderReader {
+ public:
+  bool open(const char* dir, const SourceOptions& opt = {});
+};
+
+// Writes img/0001.jpg ... (JPEG quality 95) and groundtruth_rect.txt.
+class OtbFolderWriter {
+ public:
+  bool open(const char* dir);
+  bool write(const FrameSlot& frame);
+  bool close();
+  const char* error() const { return _error; }
+
+ private:
+  std::string _dir;
+  GtWriter _gt;
+  int _count = 0;
+  char _error[512] = "";
+};
+
+}  // namespace cuetrack

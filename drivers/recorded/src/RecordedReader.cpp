@@ -1,0 +1,64 @@
+#include "cuetrack/drivers/RecordedReader.hpp"
+
+#include <cstdio>
+
+#include "cuetrack/drivers/FileBuffer.hpp"
+
+namespace cuetrack {
+
+CameraIntrinsics kinectIntrinsicsScaled(int widthPx, int heightPx) {
+  const float sx = static_cast<float>(widthPx) / 640.f;
+  const float sy = static_cast<float>(heightPx) / 480.f;
+  return {kKinectV1Intrinsics.fx * sx, kKinectV1Intrinsics.fy * sy, kKinectV1Intrinsics.cx * sx,
+          kKinectV1Intrinsics.cy * sy};
+}
+
+void RecordedReader::restart(const SourceOptions& opt) {
+  _opt = opt;
+  _gt = GroundTruth{};
+  _next = _emitted = _skipped = 0;
+  _width = _height = 0;
+  _error[0] = '\0';
+}
+
+bool RecordedReader::loadGroundTruth(const std::string& besidePath, GtFormat format, int frames,
+                                     const char* framesNoun) {
+  const std::string path = _opt.gtPath ? std::string(_opt.gtPath) : besidePath;
+  if (!_opt.gtPath && !rec::exists(path.c_str())) return true;
+  if (!_gt.load(path.c_str(), format, _error, sizeof _error)) return false;
+  if (frames > 0 && _gt.count() != frames && _gt.count() != frames - 1) {
+    std::snprintf(_error, sizeof _error, "%s: %d ground-truth boxes for %d %s", path.c_str(),
+                  _gt.count(), frames, framesNoun);
+    return false;
+  }
+  return true;
+}
+
+ReadStatus RecordedReader::next(FrameSlot& out) {
+  for (;;) {
+    if (_opt.maxFrames >= 0 && _emitted >= _opt.maxFrames) return ReadStatus::End;
+    const int i = _next;
+    const FrameRead r = readFrame(i, out);
+    if (r == FrameRead::End) return ReadStatus::End;
+    if (r == FrameRead::Error) return ReadStatus::Error;
+    ++_next;
+    if (r == FrameRead::Bad) {
+      if (!_opt.skipBadFrames) return ReadStatus::Error;
+      ++_skipped;
+      continue;
+    }
+    if (_width == 0) {
+      _width = out.rgb.width();
+      _height = out.rgb.height();
+    }
+    out.index = i;
+    out.timeUs = frameTimeUs(i);
+    out.intrinsics = frameIntrinsics(out.rgb.width(), out.rgb.height());
+    out.hasGroundTruth = _gt.boxAt(i, out.rgb.width(), out.rgb.height(), &out.groundTruth);
+    if (!out.hasGroundTruth) out.groundTruth = Box{};
+    ++_emitted;
+    return ReadStatus::Ok;
+  }
+}
+
+}  // namespace cuetrack
