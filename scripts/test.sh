@@ -50,25 +50,40 @@ cmake --workflow --preset fuzz > build/logs/fuzz.log 2>&1 || { cat build/logs/fu
 shopt -s nullglob
 fuzzers=(build/fuzz/bin/fuzz_*)
 if [ ${#fuzzers[@]} -eq 0 ]; then echo "no fuzz targets built" >&2; exit 1; fi
-for f in "${fuzzers[@]}"; do
+# One fuzzer a core at a time: each runs for FUZZ_SECONDS whatever else runs.
+fuzz_one() {  # fuzz_one BINARY: runs it; its exit code decides (a crash, a leak, a timeout)
+  local f=$1 name corpus seeds flog frc=0
   name=$(basename "$f")
   corpus="build/fuzz/corpus/$name"; mkdir -p "$corpus"
   seeds="tests/fuzz/seeds/${name#fuzz_}"
   [ -d "$seeds" ] || seeds=""
-  echo "-- $name"
-  # The fuzzer's own exit code decides (a crash, a leak, a timeout); the log keeps the
-  # reproducer's name. (Not a pipe into grep: `|| true` would reset PIPESTATUS.)
+  # The log keeps the reproducer's name.
   flog="build/fuzz/$name.log"
-  frc=0
   "$f" -max_total_time="$FUZZ_SECONDS" -print_final_stats=1 -rss_limit_mb=2048 "$corpus" $seeds \
     >"$flog" 2>&1 || frc=$?
+  echo "-- $name"
   grep -E 'stat::number_of_executed_units|ERROR|SUMMARY|Done' "$flog" || true
   if [ "$frc" -ne 0 ]; then
     tail -n 40 "$flog" >&2
     echo "fuzz: $name failed (exit $frc); full log: $flog" >&2
-    exit 1
   fi
+  return "$frc"
+}
+fuzz_failed=0
+running=0
+for f in "${fuzzers[@]}"; do
+  if [ "$running" -ge "$(nproc)" ]; then
+    wait -n || fuzz_failed=1
+    running=$((running - 1))
+  fi
+  fuzz_one "$f" &
+  running=$((running + 1))
 done
+while [ "$running" -gt 0 ]; do
+  wait -n || fuzz_failed=1
+  running=$((running - 1))
+done
+[ "$fuzz_failed" -eq 0 ] || exit 1
 recap+=("$(printf '%-10s %5ss  %d fuzz targets, %ss each, no crash' fuzz $(( $(date +%s) - t0 )) ${#fuzzers[@]} "$FUZZ_SECONDS")")
 
 echo
