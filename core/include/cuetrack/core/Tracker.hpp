@@ -21,6 +21,7 @@
 #include "cuetrack/core/FeaturePool.hpp"
 #include "cuetrack/core/Frame.hpp"
 #include "cuetrack/core/Gate.hpp"
+#include "cuetrack/core/InitError.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/LostSearch.hpp"
 #include "cuetrack/core/NegativeSampler.hpp"
@@ -36,19 +37,6 @@
 #include "cuetrack/core/WindowPadding.hpp"
 
 namespace cuetrack {
-
-enum class InitError : uint8_t {
-  None = 0,
-  EmptyBox,         // w or h <= 0
-  BoxOutsideImage,  // box does not intersect the image
-  BoxTooSmall,      // smaller than kMinTargetPx along a side
-  NoColour,         // frame without colour image
-  ImageTooLarge,    // larger than kMaxImageWidth x kMaxImageHeight
-  NoDepth,          // 3D state space without depth, or no valid depth inside the box
-  NoIntrinsics,     // 3D state space without camera intrinsics
-  BoxTooWideFor3d,  // 3D state space, box at least fx wide: no upright cylinder projects so
-};
-const char* toString(InitError e);
 
 // The members are components (particle filter, observation model, feature pool,
 // training set, negative sampler, update gate and lost detector, and the beyond-the-paper
