@@ -140,6 +140,7 @@ TEST_CASE("init rejects bad input with a named error", "[core][tracker]") {
   tracker.configure(presetConfig(Preset::Best), 1);  // ... or 2D, where it may fall back
   REQUIRE(tracker.init(wideLens, scene.truth(0)) == InitError::None);
   REQUIRE_FALSE(tracker.uses3d());
+  REQUIRE(tracker.fallbackReason() == InitError::BoxTooWideFor3d);
   const TrackResult wide = tracker.update(scene.render(1, true));
   REQUIRE(std::isfinite(wide.box.x));
   REQUIRE(std::isfinite(wide.box.w));
