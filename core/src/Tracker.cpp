@@ -19,18 +19,10 @@ float frameDtS(uint64_t last, uint64_t now) {
 
 Tracker::Tracker() = default;
 
-void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock* clock) {
+ConfigError Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock* clock) {
+  // Refused, not clamped: the caller says what is wrong; the tracker keeps its last one.
+  if (const ConfigError e = validate(config); e != ConfigError::None) return e;
   _config = config;
-  if (_config.numParticles < 1) _config.numParticles = 1;
-  if (_config.numParticles > kMaxParticles) _config.numParticles = kMaxParticles;
-  if (_config.numWeakClassifiers < 1) _config.numWeakClassifiers = 1;
-  if (_config.numWeakClassifiers > kMaxWeakClassifiers)
-    _config.numWeakClassifiers = kMaxWeakClassifiers;
-  if (_config.lostAfter2d < 0) _config.lostAfter2d = 0;
-  if (_config.numWeakClassifiers2d < 0) _config.numWeakClassifiers2d = 0;
-  if (_config.numWeakClassifiers2d > kMaxWeakClassifiers)
-    _config.numWeakClassifiers2d = kMaxWeakClassifiers;
-  if (!_config.useGray && !_config.useColour && !_config.useDepth) _config.useGray = true;
   _seed = seed;
   _clock = clock;
   _motion3d.sizeNoise = _config.adaptCylinderSize ? tuning::cylinder::kSizeNoise : 0.f;
@@ -39,6 +31,7 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
   _negatives.configure(NegativeSampler::paramsOf(_config));
   _fast.configure(_config.fastMotion);
   reset();
+  return ConfigError::None;
 }
 
 const TrackerConfig& Tracker::config() const {

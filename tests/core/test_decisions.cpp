@@ -1,18 +1,21 @@
 // The decisions Tracker wires rather than makes, each on its own: the miss rule, the hold
 // behind an occluder, the search region, the space a new track runs in (and its
-// fallback), the reseeder (particles at the cue's peak, the lost scan's tiles) and the
-// appearance cue's choice.
+// fallback), the reseeder (particles at the cue's peak, the lost scan's tiles), the
+// appearance cue's choice, and the configuration's validation.
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <string>
 
 #include "cuetrack/core/AppearanceCue.hpp"
+#include "cuetrack/core/ConfigError.hpp"
 #include "cuetrack/core/Gate.hpp"
 #include "cuetrack/core/MissRule.hpp"
 #include "cuetrack/core/OcclusionHold.hpp"
 #include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/SearchRegion.hpp"
 #include "cuetrack/core/SpaceChoice.hpp"
+#include "cuetrack/core/Tracker.hpp"
 
 using namespace cuetrack;
 
@@ -27,6 +30,7 @@ IntegralChannels gChannels;  // large: static storage
 AppearanceCue gCue;
 ParticleFilter gFilter;
 Reseeder gReseeder;
+Tracker gTracker;
 
 // A block texture on gray, and a flat surface at depthMm (0: no depth).
 Frame scene(uint16_t depthMm) {
@@ -250,4 +254,62 @@ TEST_CASE("AppearanceCue: the filter in 2D, the template in 3D, none when off",
   CHECK(gCue.region(win).w == CorrelationCue::region(win).w);
   CHECK(gCue.search(f.rgb, gChannels.tables(), win, false));
   CHECK(gCue.peak() == gCue.peak());  // a number
+}
+
+TEST_CASE("ConfigError: every preset is valid", "[core][config]") {
+  for (int i = 0; i < kNumPresets; ++i) {
+    const Preset p = static_cast<Preset>(i);
+    INFO(presetName(p));
+    CHECK(validate(presetConfig(p)) == ConfigError::None);
+    CHECK(gTracker.configure(presetConfig(p), 1) == ConfigError::None);
+  }
+}
+
+TEST_CASE("ConfigError: an invalid configuration is refused with its reason, not clamped",
+          "[core][config]") {
+  const TrackerConfig good = presetConfig(Preset::Best);
+  struct Bad {
+    void (*spoil)(TrackerConfig&);
+    ConfigError why;
+  };
+  const Bad bad[] = {
+      {[](TrackerConfig& c) { c.numParticles = 0; }, ConfigError::ParticlesOutOfRange},
+      {[](TrackerConfig& c) { c.numParticles = kMaxParticles + 1; },
+       ConfigError::ParticlesOutOfRange},
+      {[](TrackerConfig& c) { c.numWeakClassifiers = 0; }, ConfigError::WeakClassifiersOutOfRange},
+      {[](TrackerConfig& c) { c.numWeakClassifiers = 33; }, ConfigError::WeakClassifiersOutOfRange},
+      {[](TrackerConfig& c) { c.numWeakClassifiers2d = -1; },
+       ConfigError::WeakClassifiers2dOutOfRange},
+      {[](TrackerConfig& c) { c.numWeakClassifiers2d = 33; },
+       ConfigError::WeakClassifiers2dOutOfRange},
+      {[](TrackerConfig& c) { c.lostAfter2d = -1; }, ConfigError::LostAfter2dNegative},
+      {[](TrackerConfig& c) { c.useGray = c.useColour = c.useDepth = false; },
+       ConfigError::NoFeatures},
+      {[](TrackerConfig& c) { c.stateSpace = static_cast<StateSpace>(7); },
+       ConfigError::UnknownStateSpace},
+      {[](TrackerConfig& c) { c.sampling = static_cast<FeatureSampling>(7); },
+       ConfigError::UnknownSampling},
+  };
+  REQUIRE(gTracker.configure(good, 1) == ConfigError::None);
+  for (const Bad& b : bad) {
+    TrackerConfig c = good;
+    b.spoil(c);
+    INFO(toString(b.why));
+    CHECK(validate(c) == b.why);
+    CHECK(gTracker.configure(c, 2) == b.why);
+    // The tracker keeps the configuration it had.
+    CHECK(gTracker.config().numParticles == good.numParticles);
+    CHECK(gTracker.config().numWeakClassifiers == good.numWeakClassifiers);
+    CHECK(gTracker.config().stateSpace == good.stateSpace);
+    CHECK(std::string(toString(b.why)).size() > 10);
+  }
+  // The edges are valid: one particle, one weak classifier, the capacities.
+  TrackerConfig edge = good;
+  edge.numParticles = 1;
+  edge.numWeakClassifiers = 1;
+  CHECK(validate(edge) == ConfigError::None);
+  edge.numParticles = kMaxParticles;
+  edge.numWeakClassifiers = kMaxWeakClassifiers;
+  edge.numWeakClassifiers2d = kMaxWeakClassifiers;
+  CHECK(validate(edge) == ConfigError::None);
 }

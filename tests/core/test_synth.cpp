@@ -62,7 +62,7 @@ Stats runScene(const char* scene, const TrackerConfig& config, uint64_t seed, in
     REQUIRE(src->render(backwards ? frames - 1 - k : k, slot));
   };
   Stats s;
-  tracker.configure(config, seed);
+  REQUIRE(tracker.configure(config, seed) == ConfigError::None);
   play(0);
   const uint64_t firstUs = slot.timeUs;
   if (backwards) slot.timeUs = 0;
@@ -388,7 +388,7 @@ TEST_CASE("best reports a first box on a plain wall lost within a few frames", "
   const Box wall{100.f, 300.f, 40.f, 40.f};
   for (const bool rgbOnly : {false, true}) {
     for (uint64_t seed = 1; seed <= 3; ++seed) {
-      tracker.configure(presetConfig(Preset::Best), seed);
+      REQUIRE(tracker.configure(presetConfig(Preset::Best), seed) == ConfigError::None);
       REQUIRE(src->render(0, slot));
       REQUIRE(overlap(wall, slot.groundTruth) == 0.f);  // the box misses the target
       Frame first = slot.frame();

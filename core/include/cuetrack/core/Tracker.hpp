@@ -4,7 +4,7 @@
 //
 // Contract for every user (apps, tests, bench):
 //   static Tracker tracker;                       // ~MiBs: not on the stack
-//   tracker.configure(presetConfig(Preset::Best), seed, &clock);
+//   if (tracker.configure(config, seed, &clock) != ConfigError::None) ...  // refused
 //   if (tracker.init(frame, box) != InitError::None) ...
 //   TrackResult r = tracker.update(nextFrame);
 #pragma once
@@ -13,6 +13,7 @@
 
 #include "cuetrack/core/AppearanceCue.hpp"
 #include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/ConfigError.hpp"
 #include "cuetrack/core/CylinderSizer.hpp"
 #include "cuetrack/core/DepthGuard.hpp"
 #include "cuetrack/core/DepthMedian.hpp"
@@ -49,7 +50,10 @@ class Tracker {
   Tracker();
 
   // Chooses the configuration, the random seed and an optional clock for stage timings.
-  void configure(const TrackerConfig& config, uint64_t seed, const Clock* clock = nullptr);
+  // An invalid configuration (validate()) is refused with its reason, and the tracker
+  // keeps the one it had.
+  [[nodiscard]] ConfigError configure(const TrackerConfig& config, uint64_t seed,
+                                      const Clock* clock = nullptr);
   InitError init(const Frame& frame, const Box& box);
   TrackResult update(const Frame& frame);
   void reset();  // back to Idle; keeps the configuration
