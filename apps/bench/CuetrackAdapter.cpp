@@ -52,7 +52,10 @@ class CuetrackBench final : public BenchTracker {
 
   bool init(const CachedFrame& f, const Box& box, uint64_t seed, std::string* err) override {
     Tracker& t = sharedTracker();
-    t.configure(_config, seed, &_clock);
+    if (const ConfigError c = t.configure(_config, seed, &_clock); c != ConfigError::None) {
+      *err = std::string("cannot run: configuration refused: ") + toString(c);
+      return false;
+    }
     const InitError e = t.init(f.frame(), box);
     if (e == InitError::None) return true;
     *err = std::string("cannot run: init failed: ") + toString(e);

@@ -52,9 +52,10 @@ double median(uint32_t* v, int n) {
 const char* kExitCodes =
     "exit codes: 0 done, 1 a frame of the scene could not be rendered, the tracker\n"
     "  refused its first box, or stdout could not be written, 2 bad command line (an\n"
-    "  unknown --scene, an option given twice too)";
+    "  unknown --scene, an option given twice too; a configuration the tracker refuses)";
 
 constexpr int kExitRun = 1;
+constexpr int kExitUsage = 2;  // what the command line asked for cannot run
 
 }  // namespace
 
@@ -98,7 +99,11 @@ int main(int argc, char** argv) {
   if (particles > 0) cfg.numParticles = particles;
   if (weak > 0) cfg.numWeakClassifiers = weak;
   static SteadyClock clock;
-  tracker.configure(cfg, 1, icount ? nullptr : &clock);
+  if (const ConfigError e = tracker.configure(cfg, 1, icount ? nullptr : &clock);
+      e != ConfigError::None) {
+    std::fprintf(stderr, "cuetrack-trackspeed: configuration refused: %s\n", toString(e));
+    return kExitUsage;
+  }
   for (int i = 0; i < kRendered; ++i) {
     if (src->next(slots[i]) != ReadStatus::Ok) {
       std::fprintf(stderr, "cuetrack-trackspeed: %s\n", src->error());

@@ -1,4 +1,4 @@
-#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/core/InitError.hpp"
 
 namespace cuetrack {
 

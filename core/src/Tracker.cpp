@@ -1,6 +1,9 @@
 #include "cuetrack/core/Tracker.hpp"
 
+#include "cuetrack/core/MissRule.hpp"
 #include "cuetrack/core/PeakContrast.hpp"
+#include "cuetrack/core/SearchRegion.hpp"
+#include "cuetrack/core/SpaceChoice.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
@@ -16,18 +19,10 @@ float frameDtS(uint64_t last, uint64_t now) {
 
 Tracker::Tracker() = default;
 
-void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock* clock) {
+ConfigError Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock* clock) {
+  // Refused, not clamped: the caller says what is wrong; the tracker keeps its last one.
+  if (const ConfigError e = validate(config); e != ConfigError::None) return e;
   _config = config;
-  if (_config.numParticles < 1) _config.numParticles = 1;
-  if (_config.numParticles > kMaxParticles) _config.numParticles = kMaxParticles;
-  if (_config.numWeakClassifiers < 1) _config.numWeakClassifiers = 1;
-  if (_config.numWeakClassifiers > kMaxWeakClassifiers)
-    _config.numWeakClassifiers = kMaxWeakClassifiers;
-  if (_config.lostAfter2d < 0) _config.lostAfter2d = 0;
-  if (_config.numWeakClassifiers2d < 0) _config.numWeakClassifiers2d = 0;
-  if (_config.numWeakClassifiers2d > kMaxWeakClassifiers)
-    _config.numWeakClassifiers2d = kMaxWeakClassifiers;
-  if (!_config.useGray && !_config.useColour && !_config.useDepth) _config.useGray = true;
   _seed = seed;
   _clock = clock;
   _motion3d.sizeNoise = _config.adaptCylinderSize ? tuning::cylinder::kSizeNoise : 0.f;
@@ -36,6 +31,7 @@ void Tracker::configure(const TrackerConfig& config, uint64_t seed, const Clock*
   _negatives.configure(NegativeSampler::paramsOf(_config));
   _fast.configure(_config.fastMotion);
   reset();
+  return ConfigError::None;
 }
 
 const TrackerConfig& Tracker::config() const {
@@ -47,7 +43,7 @@ void Tracker::reset() {
   _lost.reset();
   _lastBox = Box{};
   _lostFrames = 0;
-  _holding = false;
+  _hold.stop();
 }
 
 Box Tracker::clampToImage(const Box& b) const {
@@ -96,51 +92,22 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _padding = WindowPadding::forTarget(target);
   const Box b = _padding.toWindow(target);  // the window tracked
 
-  const bool depthOk = frame.hasDepth() && frame.depthMm.width == frame.rgb.width &&
-                       frame.depthMm.height == frame.rgb.height;
-  _is3d = _config.stateSpace == StateSpace::Cylinder3d;
-  _depthFeatures = _config.useDepth;
-  float surfaceMm = 0.f;
-  bool fellBack = false;
-  if (_is3d || _depthFeatures) {
-    bool ok = depthOk;
-    if (ok && _is3d && !frame.intrinsics.valid()) {
-      if (!_config.fallbackTo2d) return InitError::NoIntrinsics;
-      ok = false;
-    }
-    // The init rule D = w s / (fx - w/2) needs w < 2 fx, and a cylinder whose silhouette
-    // spans fx px or more would be wider than it is far (the size adaptation's bound too).
-    if (ok && _is3d && !(b.w < frame.intrinsics.fx)) {
-      if (!_config.fallbackTo2d) return InitError::BoxTooWideFor3d;
-      ok = false;
-    }
-    if (ok && _is3d && !_depthMedian.of(frame.depthMm, b, &surfaceMm)) ok = false;
-    if (!ok) {
-      if (!_config.fallbackTo2d) return InitError::NoDepth;
-      _is3d = false;
-      _depthFeatures = false;
-      fellBack = true;
-    }
-  }
-  const LostDetector lostDefaults{};
-  _lost.lostAfter = lostDefaults.lostAfter;
-  _numWeak = _config.numWeakClassifiers;
-  if (fellBack) {
-    if (_config.numWeakClassifiers2d > 0) _numWeak = _config.numWeakClassifiers2d;
-    if (_config.lostAfter2d > 0) _lost.lostAfter = _config.lostAfter2d;
-  }
+  const SpaceChoice space = SpaceChoice::of(_config, frame, b, _depthMedian);
+  if (space.error != InitError::None) return space.error;
+  _is3d = space.is3d;
+  _depthFeatures = space.depthFeatures;
+  _fallbackWhy = space.why;
+  _numWeak = space.numWeak;
+  _lost.lostAfter = space.lostAfter;
   _k = frame.intrinsics;
   _rng.reseed(_seed);
   _lost.reset();
   _lostFrames = 0;
-  _holding = false;
-  _learntMotion.clear();
-  _learntUs = frame.timeUs;
-  _scanTile = 0;
+  _reseeder.restartScan();
 
   Particle q;
   if (_is3d) {
-    q = cylinderFromBox(b, surfaceMm, _k);
+    q = cylinderFromBox(b, space.surfaceMm, _k);
   } else {
     q.p[0] = b.x + 0.5f * b.w;
     q.p[1] = b.y + 0.5f * b.h;
@@ -148,7 +115,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
     q.size[1] = b.h;
   }
   _lastEstimate = q;
-  _learnt = q;
+  _hold.start(frame.timeUs, q);
   _prevEstimate = q;
   _depthGuard.reset(q.p[2]);
   _lastBox = b;
@@ -174,11 +141,8 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   addNegatives(b, _set.numNegatives() + tuning::training::kExamples, roi);  // fill the FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
   train();
-  // The filter in 2D only: in 3D it cost the carried target (`held`) 0.9 against a seed
-  // spread of 0.7 (docs/algorithm.md), so 3D keeps the gray template.
-  _filterCue = _config.correlationCue && _config.correlationFilter && !_is3d;
-  if (_filterCue) _dcf.reset(frame.rgb, b);
-  if (_config.correlationCue && !_filterCue) _corr.reset(_channels.tables(), b);
+  _cue.start(_config.correlationCue, _config.correlationFilter, _is3d, frame.rgb,
+             _channels.tables(), b);
 
   _sizer.clear();
   if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
@@ -193,9 +157,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
 
 void Tracker::learn(const Box& estimate, const PixelRect& roi) {
   addExample(estimate, true);
-  if (_filterCue) _dcf.learn(_rgb, estimate, tuning::dcf::kLearnRate);
-  if (_config.correlationCue && !_filterCue)
-    _corr.learn(_channels.tables(), estimate, tuning::correlation::kLearnRate);
+  _cue.learn(_rgb, _channels.tables(), estimate);
   addNegatives(estimate, tuning::training::kNegativesPerUpdate, roi);
   if (_config.dynamicPool && _config.sampling == FeatureSampling::Sparse) {
     const int replaced = _pool.update(_featureErrors, _rng);
@@ -214,8 +176,6 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
   _fast.beginFrame(_is3d, dtS);
   const SearchView view = searchView();
   const int n = _filter.size();
-  PixelRect roi{};
-  float meanW = 0.f, meanH = 0.f;
   for (int i = 0; i < n; ++i) {
     Particle& q = _filter[i];
     if (wasLost && LostSearch::drawsAnew(i))
@@ -235,27 +195,12 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
       q.size[1] = c.h;
     }
     _boxes[i] = particleBox(q);
-    if (_boxes[i].empty()) continue;
-    meanW += _boxes[i].w;
-    meanH += _boxes[i].h;
-    roi = unite(roi, clipBox(_boxes[i], _imageW, _imageH));
   }
-  meanW /= static_cast<float>(n);
-  meanH /= static_cast<float>(n);
-  constexpr float m = tuning::kRoiMarginSides;
-  roi = clipBox(Box{static_cast<float>(roi.x0) - m * meanW, static_cast<float>(roi.y0) - m * meanH,
-                    static_cast<float>(roi.width()) + 2.f * m * meanW,
-                    static_cast<float>(roi.height()) + 2.f * m * meanH},
-                _imageW, _imageH);
-  if (_config.correlationCue && !wasLost && (_corr.ready() || _dcf.ready())) {
-    const Box around =
-        _filterCue ? CorrelationFilter::region(_lastBox) : CorrelationCue::region(_lastBox);
-    roi = unite(roi, clipBox(around, _imageW, _imageH));
-  }
-  // Lost: the template searches the whole image, a few tiles a frame.
-  if (_config.correlationCue && wasLost) roi = PixelRect{0, 0, _imageW, _imageH};
-  if (roi.width() < 2 || roi.height() < 2) roi = PixelRect{0, 0, _imageW, _imageH};
-  return roi;
+  // The cue searches around the last estimate; lost, the whole image, a few tiles a frame.
+  const bool aroundLast = _cue.enabled() && !wasLost && _cue.anyReady();
+  const Box cueRegion = aroundLast ? _cue.region(_lastBox) : Box{};
+  return SearchRegion::of(_boxes, n, aroundLast ? &cueRegion : nullptr, _cue.enabled() && wasLost,
+                          _imageW, _imageH);
 }
 
 bool Tracker::scorable(const Box& b, const Particle& q, bool searching) const {
@@ -321,19 +266,13 @@ Tracker::Estimate Tracker::estimate() {
 bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi) {
   bool miss = false;  // whatever the confidence: not learnt, and a miss for the detector
   if (_config.lostDetection) {
-    // 3D: the estimate jumped well in front of or behind where the target was last
-    // confirmed: the depth correction has put the cloud on something passing in front,
-    // or on the background (either can look enough like the target to keep the
-    // confidence above the lost threshold). Counts as a miss, and is not learnt.
-    // An estimate that does not stand out from the windows beside it (a plain wall, a
-    // cloud drifted onto background) is a miss too, and not learnt.
-    miss = (_is3d && !wasLost && !_lost.onProbation() && _depthGuard.jumped(e.particle.p[2])) ||
-           PeakContrast::flat(e.contrast);
-    // Found again at under 3/4 or over 4/3 of the depth the target was last confirmed at
-    // (the floor, a wall behind, a look-alike in front): not the target, which may have
-    // moved in depth while hidden, but not so far.
-    if (_is3d && (wasLost || _lost.onProbation()) && _depthGuard.implausibleFind(e.particle.p[2]))
-      miss = true;
+    MissRule::Inputs in;
+    in.is3d = _is3d;
+    in.wasLost = wasLost;
+    in.onProbation = _lost.onProbation();
+    in.depthMm = e.particle.p[2];
+    in.contrast = e.contrast;
+    miss = MissRule::miss(in, _depthGuard);
     e.miss = miss;
     _state = _lost.step(_state, miss ? 0.f : e.confidence);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
@@ -348,20 +287,15 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
         _sizer.follow(frame, _channels, _k, particleBox(e.particle), e.particle, _filter))
       e.box = particleBox(e.particle);
     _lastEstimate = e.particle;
-    _learnt = e.particle;
-    _learntUs = frame.timeUs;
-    if (_is3d && _config.occlusionGate) {
-      const float p[3] = {e.particle.p[0], e.particle.p[1], e.particle.p[2]};
-      _learntMotion.add(frame.timeUs, p);
-    }
+    _hold.learnt(frame.timeUs, e.particle, _is3d && _config.occlusionGate);
     learn(clampToImage(e.box), roi);
     learned = true;
-  } else if (_filterCue && !miss && !e.box.empty() && _state == TrackState::Tracking &&
+  } else if (_cue.isFilter() && !miss && !e.box.empty() && _state == TrackState::Tracking &&
              !_lost.onProbation()) {
     // The filter follows the target on every frame it is tracked, not only on those fit
     // for the classifier: its negatives are the context itself, and a filter left behind
     // by a turning or deforming target loses it (docs/algorithm.md).
-    _dcf.learn(_rgb, clampToImage(e.box), tuning::dcf::kLearnRate);
+    _cue.learn(_rgb, _channels.tables(), clampToImage(e.box));
   }
   // The depth the target was last confirmed at: learnt, or found again (it may have
   // moved in depth while hidden).
@@ -373,11 +307,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
 
 bool Tracker::covered(const Frame& frame, const Particle& q) const {
   if (!_is3d || !_config.occlusionGate || !frame.hasDepth()) return false;
-  // The target's own box (not the padded window), against its front surface.
-  const float frontMm = q.p[2] - 0.5f * q.size[0];
-  return occlusion::nearerFraction(frame.depthMm, targetBox(q),
-                                   occlusion::occluderBelowMm(frontMm, q.size[0])) >
-         tuning::occlusion::kCoveredAbove;
+  return OcclusionHold::covered(frame.depthMm, targetBox(q), q);  // not the padded window
 }
 
 bool Tracker::depthMeasured(const Particle& q) const {
@@ -390,76 +320,31 @@ bool Tracker::depthMeasured(const Particle& q) const {
 }
 
 void Tracker::hold(const Frame& frame, const Estimate& e) {
-  // Lost, or missed, with the last learnt estimate covered by a nearer surface: the target
-  // is behind it, and reported there, moving on as it moved, while the search goes on,
-  // until found again, uncovered, or held for kMaxHoldS.
   const bool behind = (_state == TrackState::Lost || e.miss) && covered(frame, _lastEstimate);
-  if (behind && !_holding) {
-    _heldSinceUs = frame.timeUs;
-    _learntMotion.velocity(_heldVelocity);
-  }
-  _holding = behind &&
-             static_cast<float>(frame.timeUs - _heldSinceUs) * 1e-6f < tuning::occlusion::kMaxHoldS;
-  if (!_holding) return;
-  // From where it was learnt (an earlier hold may have moved _lastEstimate), across the
-  // view only (x, y: what brings the target out from behind the occluder), not in depth.
-  const float sinceS = static_cast<float>(frame.timeUs - _learntUs) * 1e-6f;
-  for (int a = 0; a < 2; ++a) _lastEstimate.p[a] = _learnt.p[a] + _heldVelocity[a] * sinceS;
+  _hold.step(frame.timeUs, behind, &_lastEstimate);  // the search follows the held estimate
 }
 
 void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity) {
-  // One particle in kEvery onto window c: `from` moved there (3D: at its depth on the ray
-  // through c's centre, then onto the surface there), jittered by the 2D position noise.
-  const int n = _filter.size();
-  const float side = fmath::sqrtf(c.w * c.h);
-  const float jitter = tuning::motion2d::kPositionNoise * side;
-  int moved = 0;
-  for (int i = tuning::correlation::kSlot; i < n; i += tuning::correlation::kEvery) {
-    const float u = c.x + 0.5f * c.w + jitter * _rng.gaussianFast();
-    const float v = c.y + 0.5f * c.h + jitter * _rng.gaussianFast();
-    Particle q = from;
-    if (_is3d) {
-      q.p = backProject(_k, u, v, from.p.z());
-      // Component by component with 1 / dt: Eigen's vector-by-scalar quotient runs on
-      // NEON's reciprocal estimate on armhf, and the tracks would differ there.
-      const float invDt = withVelocity && dtS > 0.f ? 1.f / dtS : 0.f;
-      q.v[0] = (q.p[0] - from.p[0]) * invDt;
-      q.v[1] = (q.p[1] - from.p[1]) * invDt;
-      q.v[2] = 0.f;
-      keepInView(q, _k, _imageW, _imageH);
-      correctDepth(q, _channels, _k, dtS, _imageW, _imageH);
-    } else {
-      q.p[0] = u;
-      q.p[1] = v;
-      q.v.setZero();
-      if (withVelocity) {
-        q.v[0] = u - from.p[0];  // px per frame
-        q.v[1] = v - from.p[1];
-      }
-      q.size[0] = c.w;
-      q.size[1] = c.h;
-    }
-    _filter[i] = q;
-    _movedIndex[moved] = static_cast<uint16_t>(i);
-    _movedBoxes[moved] = particleBox(q);
-    _boxes[i] = _movedBoxes[moved];
-    // Mostly inside the image even while tracking, as the template's peaks are (while
-    // searching, scorable() asks that already).
-    const bool searching = _state == TrackState::Lost;
-    _movedValid[moved] =
-        scorable(_boxes[i], q, searching) &&
-                (searching || LostSearch::insideEnough(_boxes[i], _imageW, _imageH))
-            ? 1
-            : 0;
-    ++moved;
+  const int moved =
+      _reseeder.place(c, from, dtS, withVelocity, searchView(), _channels, _rng, _filter);
+  // Mostly inside the image even while tracking, as the cue's peaks are (while searching,
+  // scorable() asks that already).
+  const bool searching = _state == TrackState::Lost;
+  for (int k = 0; k < moved; ++k) {
+    const int i = _reseeder.index(k);
+    _boxes[i] = _reseeder.windows()[k];
+    _movedValid[k] = scorable(_boxes[i], _filter[i], searching) &&
+                             (searching || LostSearch::insideEnough(_boxes[i], _imageW, _imageH))
+                         ? 1
+                         : 0;
   }
-  _strong.evaluateMany(_channels.tables(), _movedBoxes, _movedValid, moved, _movedScores);
+  _strong.evaluateMany(_channels.tables(), _reseeder.windows(), _movedValid, moved, _movedScores);
   for (int k = 0; k < moved; ++k)
-    _scores[_movedIndex[k]] = _movedValid[k] != 0 ? _movedScores[k] : -1.f;
+    _scores[_reseeder.index(k)] = _movedValid[k] != 0 ? _movedScores[k] : -1.f;
 }
 
 bool Tracker::searchCue(const Box& around, bool scales) {
-  return _filterCue ? _dcf.search(_rgb, around, scales) : _corr.search(_channels.tables(), around);
+  return _cue.search(_rgb, _channels.tables(), around, scales);
 }
 
 void Tracker::correlate(float dtS) {
@@ -467,41 +352,28 @@ void Tracker::correlate(float dtS) {
   _corrActive = true;
   // Some particles onto the peak, when there is one (the target may have jumped where the
   // cloud did not reach), moving on as it jumped.
-  if (cuePeak() >= cueMinPeak()) drawAt(cuePeakBox(), _prevEstimate, dtS, true);
+  if (_cue.peak() >= _cue.minPeak()) drawAt(_cue.peakBox(), _prevEstimate, dtS, true);
   const int n = _filter.size();
   for (int i = 0; i < n; ++i) {
     const Box& b = _boxes[i];
     const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
-    _corrScores[i] = b.empty()    ? CorrelationCue::kNoResponse
-                     : _filterCue ? _dcf.at(u, v)
-                                  : _corr.at(u, v);
+    _corrScores[i] = b.empty() ? CorrelationCue::kNoResponse : _cue.at(u, v);
   }
 }
 
 void Tracker::scanLost(float dtS) {
-  // While lost: the template searched over the image, a few tiles a frame at the last
-  // learnt size, the tiles' best peak (if strong enough) given particles to confirm.
-  if (!(_filterCue ? _dcf.ready() : _corr.ready())) return;
+  // While lost: the cue searched over the image, a few tiles a frame at the last learnt
+  // size, the tiles' best peak (if strong enough) given particles to confirm.
+  if (!_cue.ready()) return;
   const Box last = particleBox(_lastEstimate);
   if (last.empty()) return;
-  // A search covers window positions within kReach cells (1.5 sides) of its centre (the
-  // filter: kPadding / 2 sides): tiles 3 (kPadding) sides apart cover the image.
-  const float step = _filterCue ? CorrelationFilter::kPadding
-                                : 2.f * static_cast<float>(CorrelationCue::kReach) /
-                                      static_cast<float>(CorrelationCue::kCells);
-  const int nx = 1 + static_cast<int>((static_cast<float>(_imageW) - last.w) / (step * last.w));
-  const int ny = 1 + static_cast<int>((static_cast<float>(_imageH) - last.h) / (step * last.h));
-  const int tiles = nx * ny;
-  float best = cueMinPeak();
+  const Reseeder::Tiles tiles = Reseeder::tiles(last, _cue.scanStepSides(), _imageW, _imageH);
+  float best = _cue.minPeak();
   Box found{};
-  for (int j = 0; j < tuning::correlation::kScanTilesPerFrame && j < tiles; ++j) {
-    const int t = _scanTile++ % tiles;
-    if (_scanTile >= tiles) _scanTile = 0;
-    const Box around{(0.5f * step + static_cast<float>(t % nx) * step) * last.w,
-                     (0.5f * step + static_cast<float>(t / nx) * step) * last.h, last.w, last.h};
-    if (searchCue(around, false) && cuePeak() >= best) {
-      best = cuePeak();
-      found = cuePeakBox();
+  for (int j = 0; j < Reseeder::kTilesPerFrame && j < tiles.count(); ++j) {
+    if (searchCue(_reseeder.nextTile(tiles), false) && _cue.peak() >= best) {
+      best = _cue.peak();
+      found = _cue.peakBox();
     }
   }
   if (!found.empty()) drawAt(found, _lastEstimate, dtS, false);
@@ -547,8 +419,8 @@ TrackResult Tracker::update(const Frame& frame) {
   const uint64_t t3 = now();
   score(roi, wasLost);
   _corrActive = false;
-  if (_config.correlationCue && !wasLost) correlate(dtS);
-  if (_config.correlationCue && wasLost) scanLost(dtS);
+  if (_cue.enabled() && !wasLost) correlate(dtS);
+  if (_cue.enabled() && wasLost) scanLost(dtS);
   Estimate e = estimate();
   const uint64_t t4 = now();
   const bool learned = decide(frame, e, wasLost, roi);
@@ -573,8 +445,8 @@ TrackResult Tracker::update(const Frame& frame) {
   r.box = _padding.toTarget(_lastBox);
   r.confidence = e.confidence;
   r.learned = learned;
-  const Particle& at = _holding ? _lastEstimate : e.particle;
-  if (_holding) {
+  const Particle& at = _hold.holding() ? _lastEstimate : e.particle;
+  if (_hold.holding()) {
     r.state = TrackState::Tracking;
     r.occluded = true;
     r.box = targetBox(at);

@@ -35,7 +35,7 @@ std::unique_ptr<FrameSlot> start(Source& source, const std::string& spec, const 
   if (!source.open(spec.c_str())) FAIL(source.error());
   auto slot = std::make_unique<FrameSlot>();
   REQUIRE(source.next(*slot) == ReadStatus::Ok);
-  tracker.configure(cfg, seed);
+  REQUIRE(tracker.configure(cfg, seed) == ConfigError::None);
   REQUIRE(tracker.init(slot->frame(), slot->groundTruth) == InitError::None);
   return slot;
 }

@@ -41,7 +41,7 @@ void hashFloat(uint64_t& h, float v) {
 
 RunStats run(const TrackerConfig& cfg, uint64_t seed, int frames, bool depth) {
   RunStats s;
-  tracker.configure(cfg, seed);
+  REQUIRE(tracker.configure(cfg, seed) == ConfigError::None);
   const test::AllocScope scope;
   REQUIRE(tracker.init(scene.render(0, depth), scene.truth(0)) == InitError::None);
   for (int t = 1; t < frames; ++t) {
@@ -110,7 +110,7 @@ TEST_CASE("preset names round-trip and configure the paper's tests", "[core][pre
 }
 
 TEST_CASE("init rejects bad input with a named error", "[core][tracker]") {
-  tracker.configure(presetConfig(Preset::Test1_1), 1);
+  REQUIRE(tracker.configure(presetConfig(Preset::Test1_1), 1) == ConfigError::None);
   const Frame f = scene.render(0, true);
   REQUIRE(tracker.init(f, Box{10, 10, 0, 20}) == InitError::EmptyBox);
   REQUIRE(tracker.init(f, Box{1000, 10, 20, 20}) == InitError::BoxOutsideImage);
@@ -124,7 +124,7 @@ TEST_CASE("init rejects bad input with a named error", "[core][tracker]") {
   // Idle after a failed init: update reports Idle and does nothing.
   REQUIRE(tracker.update(f).state == TrackState::Idle);
 
-  tracker.configure(presetConfig(Preset::Test2_1), 1);
+  REQUIRE(tracker.configure(presetConfig(Preset::Test2_1), 1) == ConfigError::None);
   REQUIRE(tracker.init(scene.render(0, false), scene.truth(0)) == InitError::NoDepth);
   Frame noK = f;
   noK.intrinsics = CameraIntrinsics{};
@@ -137,15 +137,17 @@ TEST_CASE("init rejects bad input with a named error", "[core][tracker]") {
   Frame wideLens = f;
   wideLens.intrinsics.fx = 0.9f * scene.truth(0).w;
   REQUIRE(tracker.init(wideLens, scene.truth(0)) == InitError::BoxTooWideFor3d);
-  tracker.configure(presetConfig(Preset::Best), 1);  // ... or 2D, where it may fall back
+  // ... or 2D, where it may fall back
+  REQUIRE(tracker.configure(presetConfig(Preset::Best), 1) == ConfigError::None);
   REQUIRE(tracker.init(wideLens, scene.truth(0)) == InitError::None);
   REQUIRE_FALSE(tracker.uses3d());
+  REQUIRE(tracker.fallbackReason() == InitError::BoxTooWideFor3d);
   const TrackResult wide = tracker.update(scene.render(1, true));
   REQUIRE(std::isfinite(wide.box.x));
   REQUIRE(std::isfinite(wide.box.w));
 
   // `best` without depth falls back to 2D RGB.
-  tracker.configure(presetConfig(Preset::Best), 1);
+  REQUIRE(tracker.configure(presetConfig(Preset::Best), 1) == ConfigError::None);
   REQUIRE(tracker.init(scene.render(0, false), scene.truth(0)) == InitError::None);
   REQUIRE_FALSE(tracker.uses3d());
   REQUIRE_FALSE(tracker.usesDepthFeatures());
@@ -197,7 +199,7 @@ TEST_CASE("tracks are identical on every platform", "[core][tracker][golden]") {
 }
 
 TEST_CASE("reset returns to idle and keeps the configuration", "[core][tracker]") {
-  tracker.configure(presetConfig(Preset::Test1_2), 3);
+  REQUIRE(tracker.configure(presetConfig(Preset::Test1_2), 3) == ConfigError::None);
   REQUIRE(tracker.init(scene.render(0, false), scene.truth(0)) == InitError::None);
   REQUIRE(tracker.update(scene.render(1, false)).state == TrackState::Tracking);
   tracker.reset();
@@ -232,7 +234,7 @@ TEST_CASE("best's measured size keeps a box that includes parts depth misses", "
   REQUIRE(e.hasHeight);
   REQUIRE(e.heightPx < 0.75f * box.h);
 
-  tracker.configure(presetConfig(Preset::Best), 1);
+  REQUIRE(tracker.configure(presetConfig(Preset::Best), 1) == ConfigError::None);
   REQUIRE(tracker.init(f, box) == InitError::None);
   REQUIRE(tracker.uses3d());
   double err = 0.0;
@@ -258,7 +260,7 @@ TEST_CASE("a 6x6 and a 3x3 first box are tracked (on a window padded with contex
   static test::MovingSquareOf<6> tiny;
   const int frames = std::getenv("CUETRACK_EMULATED") != nullptr ? 20 : 60;
   for (const Preset p : {Preset::Best, Preset::Test1_1}) {
-    tracker.configure(presetConfig(p), 3);
+    REQUIRE(tracker.configure(presetConfig(p), 3) == ConfigError::None);
     REQUIRE(tracker.init(tiny.render(0, false), tiny.truth(0)) == InitError::None);
     int hits = 0;
     double sizeErr = 0.0;
@@ -276,7 +278,7 @@ TEST_CASE("a 6x6 and a 3x3 first box are tracked (on a window padded with contex
   // third of overlap). On this scene's 8 px background blocks the padded window then
   // drifts onto the background (docs/algorithm.md, "Small targets").
   static test::MovingSquareOf<3> dot;
-  tracker.configure(presetConfig(Preset::Best), 3);
+  REQUIRE(tracker.configure(presetConfig(Preset::Best), 3) == ConfigError::None);
   REQUIRE(tracker.init(dot.render(0, false), dot.truth(0)) == InitError::None);
   int held = 0;
   constexpr int kDotFrames = 10;

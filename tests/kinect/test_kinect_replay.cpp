@@ -123,7 +123,7 @@ TEST_CASE("tracking over the live path gives the same tracks as reading the reco
   constexpr int kMaxBoxes = 64;
   Box refBoxes[kMaxBoxes];
   int refCount = 0;
-  tracker.configure(config, kSeed);
+  REQUIRE(tracker.configure(config, kSeed) == ConfigError::None);
   REQUIRE(gReader.next(gRef) == ReadStatus::Ok);
   REQUIRE(gRef.hasGroundTruth);
   const Box start = gRef.groundTruth;
@@ -135,7 +135,7 @@ TEST_CASE("tracking over the live path gives the same tracks as reading the reco
   // Live run over the same recording, same seed.
   KinectOptions options;
   REQUIRE(gKinect.open(options));
-  tracker.configure(config, kSeed);
+  REQUIRE(tracker.configure(config, kSeed) == ConfigError::None);
   REQUIRE(gKinect.next(gLive) == ReadStatus::Ok);
   REQUIRE(tracker.init(gLive.frame(), start) == InitError::None);
   int liveCount = 0;

@@ -5,8 +5,7 @@ namespace cuetrack::app {
 bool CoreTracker::configure(const char* preset, uint64_t seed, const Clock* clock) {
   Preset p;
   if (!parsePreset(preset, &p)) return false;
-  _tracker.configure(presetConfig(p), seed, clock);
-  return true;
+  return _tracker.configure(presetConfig(p), seed, clock) == ConfigError::None;
 }
 
 int CoreTracker::init(const Frame& frame, const Box& box, const char** why) {

@@ -15,7 +15,8 @@ namespace cuetrack::app {
 class TrackerPort {
  public:
   virtual ~TrackerPort() = default;
-  // Preset name ("best", "1.1"...). False for an unknown name.
+  // Preset name ("best", "1.1"...). False for an unknown name (the tracker refuses no
+  // preset's configuration: test_core_tracker checks every one).
   virtual bool configure(const char* preset, uint64_t seed, const Clock* clock) = 0;
   // 0 on success, else a nonzero reason with a one-line text in *why.
   virtual int init(const Frame& frame, const Box& box, const char** why) = 0;

@@ -4,16 +4,16 @@
 //
 // Contract for every user (apps, tests, bench):
 //   static Tracker tracker;                       // ~MiBs: not on the stack
-//   tracker.configure(presetConfig(Preset::Best), seed, &clock);
+//   if (tracker.configure(config, seed, &clock) != ConfigError::None) ...  // refused
 //   if (tracker.init(frame, box) != InitError::None) ...
 //   TrackResult r = tracker.update(nextFrame);
 #pragma once
 
 #include <cstdint>
 
+#include "cuetrack/core/AppearanceCue.hpp"
 #include "cuetrack/core/Clock.hpp"
-#include "cuetrack/core/CorrelationCue.hpp"
-#include "cuetrack/core/CorrelationFilter.hpp"
+#include "cuetrack/core/ConfigError.hpp"
 #include "cuetrack/core/CylinderSizer.hpp"
 #include "cuetrack/core/DepthGuard.hpp"
 #include "cuetrack/core/DepthMedian.hpp"
@@ -21,11 +21,13 @@
 #include "cuetrack/core/FeaturePool.hpp"
 #include "cuetrack/core/Frame.hpp"
 #include "cuetrack/core/Gate.hpp"
+#include "cuetrack/core/InitError.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/LostSearch.hpp"
 #include "cuetrack/core/NegativeSampler.hpp"
-#include "cuetrack/core/Occlusion.hpp"
+#include "cuetrack/core/OcclusionHold.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
+#include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
 #include "cuetrack/core/SizeFilter.hpp"
@@ -37,30 +39,21 @@
 
 namespace cuetrack {
 
-enum class InitError : uint8_t {
-  None = 0,
-  EmptyBox,         // w or h <= 0
-  BoxOutsideImage,  // box does not intersect the image
-  BoxTooSmall,      // smaller than kMinTargetPx along a side
-  NoColour,         // frame without colour image
-  ImageTooLarge,    // larger than kMaxImageWidth x kMaxImageHeight
-  NoDepth,          // 3D state space without depth, or no valid depth inside the box
-  NoIntrinsics,     // 3D state space without camera intrinsics
-  BoxTooWideFor3d,  // 3D state space, box at least fx wide: no upright cylinder projects so
-};
-const char* toString(InitError e);
-
 // The members are components (particle filter, observation model, feature pool,
 // training set, negative sampler, update gate and lost detector, and the beyond-the-paper
-// cylinder sizer, size filter, lost search, depth guard, fast motion and correlation cue),
-// each a fixed-size class of its own with its own tests; Tracker wires them and keeps the
-// track's state. It is large (MiBs): give it static storage or allocate it once.
+// cylinder sizer, size filter, lost search, depth guard, fast motion, appearance cue,
+// miss rule, occlusion hold, search region, space choice and reseeder), each a fixed-size
+// class of its own with its own tests; Tracker wires them and keeps the track's state.
+// It is large (MiBs): give it static storage or allocate it once.
 class Tracker {
  public:
   Tracker();
 
   // Chooses the configuration, the random seed and an optional clock for stage timings.
-  void configure(const TrackerConfig& config, uint64_t seed, const Clock* clock = nullptr);
+  // An invalid configuration (validate()) is refused with its reason, and the tracker
+  // keeps the one it had.
+  [[nodiscard]] ConfigError configure(const TrackerConfig& config, uint64_t seed,
+                                      const Clock* clock = nullptr);
   InitError init(const Frame& frame, const Box& box);
   TrackResult update(const Frame& frame);
   void reset();  // back to Idle; keeps the configuration
@@ -69,6 +62,8 @@ class Tracker {
   // Whether the running track uses the 3D state / depth features (after any fallback).
   bool uses3d() const { return _is3d; }
   bool usesDepthFeatures() const { return _depthFeatures; }
+  // Why a track that asked for 3D or depth runs 2D RGB (SpaceChoice); None: as asked.
+  InitError fallbackReason() const { return _fallbackWhy; }
   // Read-only views of the components, for tests and diagnostics.
   const FeaturePool& pool() const { return _pool; }
   const TrainingSet& trainingSet() const { return _set; }
@@ -97,14 +92,8 @@ class Tracker {
   bool depthMeasured(const Particle& q) const;
   void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
   void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
-  // correlationFilter in 2D: the same from the correlation filter (CorrelationFilter).
-  bool searchCue(const Box& around, bool scales);
-  float cuePeak() const { return _filterCue ? _dcf.peak() : _corr.peak(); }
-  Box cuePeakBox() const { return _filterCue ? _dcf.peakBox() : _corr.peakBox(); }
-  float cueMinPeak() const {
-    return _filterCue ? tuning::dcf::kMinPeak : tuning::correlation::kMinPeak;
-  }
-  // One particle in correlation::kEvery drawn at window c from `from`, and scored.
+  bool searchCue(const Box& around, bool scales);  // the appearance cue, on this frame
+  // One particle in correlation::kEvery drawn at window c from `from` (Reseeder), and scored.
   void drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity);
   // Whether particle q's window b is scored (else -1). While searching (lost) it must lie
   // mostly inside the image and, in 3D, not on a surface too far off the confirmed depth
@@ -137,6 +126,7 @@ class Tracker {
   TrackState _state = TrackState::Idle;
   bool _is3d = false;
   bool _depthFeatures = false;
+  InitError _fallbackWhy = InitError::None;
   int _numWeak = 1;  // M for this track: numWeakClassifiers, or ...2d in the 2D fallback
   int _imageW = 0, _imageH = 0;
   CameraIntrinsics _k{};
@@ -146,28 +136,17 @@ class Tracker {
   WindowPadding _padding{};    // target -> window, for a target under kMinTrackedSidePx
   SizeFilter2d _sizeFilter{};  // 2D: the estimate's size, smoothed
   Particle _lastEstimate{};
-  Particle _prevEstimate{};  // the last frame's estimate (correlate() moves it)
-  CorrelationCue _corr;
-  CorrelationFilter _dcf;            // correlationFilter, in 2D: instead of _corr
-  bool _filterCue = false;           // this track's cue is _dcf
-  RgbView _rgb{};                    // update()'s colour image, for _dcf
-  bool _corrActive = false;          // this frame's map was searched
-  int _scanTile = 0;                 // scanLost: the next tile
-  float _corrScores[kMaxParticles];  // the template's response at each particle
-  static constexpr int kMaxMoved = kMaxParticles / tuning::correlation::kEvery + 1;
-  uint16_t _movedIndex[kMaxMoved];  // the particles moved onto the peak this frame
-  Box _movedBoxes[kMaxMoved];
-  uint8_t _movedValid[kMaxMoved];
-  float _movedScores[kMaxMoved];
+  Particle _prevEstimate{};                  // the last frame's estimate (correlate() moves it)
+  AppearanceCue _cue;                        // correlationCue: the template (3D) or the filter (2D)
+  RgbView _rgb{};                            // update()'s colour image, for the filter
+  bool _corrActive = false;                  // this frame's map was searched
+  float _corrScores[kMaxParticles];          // the cue's response at each particle
+  Reseeder _reseeder;                        // particles at the cue's peak; the lost scan's tiles
+  uint8_t _movedValid[Reseeder::kMaxMoved];  // ... whether each is scored
+  float _movedScores[Reseeder::kMaxMoved];
   // occlusionGate: lost while covered by a nearer surface, the target is reported where
-  // it was last learnt (_learnt, at _learntUs), moved on at the velocity of its learnt
-  // positions (_heldVelocity), since _heldSinceUs; _lastEstimate follows, and the search
-  // with it.
-  bool _holding = false;
-  uint64_t _heldSinceUs = 0, _learntUs = 0;
-  Particle _learnt{};
-  float _heldVelocity[3] = {0.f, 0.f, 0.f};  // [mm/s]
-  LearntMotion _learntMotion;
+  // it is held; _lastEstimate follows, and the search with it.
+  OcclusionHold _hold;
   int _lostFrames = 0;     // lost detection (beyond the paper): frames since declared lost
   DepthGuard _depthGuard;  // ... 3D: the estimate's depth against the confirmed one
 
