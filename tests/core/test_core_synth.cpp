@@ -317,7 +317,8 @@ TEST_CASE("best re-acquires the target after an occluder has hidden it", "[core]
   CHECK(meanNoLost <= 0.5f);
 }
 
-TEST_CASE("best holds the target behind a look-alike that crosses in front of it", "[core][e2e][occlude]") {
+TEST_CASE("best holds the target behind a look-alike that crosses in front of it",
+          "[core][e2e][occlude]") {
   // The look-alike (1.6 m) covers the target (2.4 m) partly from frame 46 to 104 and wholly
   // from 67 to 84. Seeds 1-5, scored as cuetrack-bench scores (a hit where the target is
   // visible and tracked, "not visible" where it is hidden): 0.99-1.0 with the occlusion
@@ -344,7 +345,8 @@ TEST_CASE("best holds the target behind a look-alike that crosses in front of it
   CHECK(mean >= meanNoGate + 0.15f);
 }
 
-TEST_CASE("best says when the target's depth is predicted, and holds it by colour", "[core][e2e][occlude]") {
+TEST_CASE("best says when the target's depth is predicted, and holds it by colour",
+          "[core][e2e][occlude]") {
   // The no-depth scene: the target reads no depth in frames 40-109, moving meanwhile.
   // Seeds 1-3: flagged on all of them and on no other; mean overlap over them 0.86-0.89
   // (best with its depth withheld from the start: 0.85 over the whole scene). Under qemu
@@ -374,7 +376,8 @@ TEST_CASE("best says when the target's depth is predicted, and holds it by colou
   }
 }
 
-TEST_CASE("best reports a first box on a plain wall lost within a few frames", "[core][e2e][reacquire]") {
+TEST_CASE("best reports a first box on a plain wall lost within a few frames",
+          "[core][e2e][reacquire]") {
   // The untextured scene's wall is one grey: a box on it (left of the grey cylinder) has
   // nothing the classifier can tell from the windows beside it. Its score there stays
   // near 0.5, above the lost threshold, so only PeakContrast can catch it. In 3D and in
@@ -417,7 +420,8 @@ TEST_CASE("best reports a first box on a plain wall lost within a few frames", "
   src->~SyntheticSource();
 }
 
-TEST_CASE("best's cylinder follows a target whose width changes as it turns", "[core][e2e][occlude]") {
+TEST_CASE("best's cylinder follows a target whose width changes as it turns",
+          "[core][e2e][occlude]") {
   // A box yawing 90 degrees: 107 px wide side-on, 38 px end-on at frame 149. From frame
   // 100 (yaw 60 degrees, width 0.7x) a cylinder of the first frame's size is too wide
   // (scene and tracker seed 3: fixed size ~0.44 mean overlap there, measured ~0.87).
@@ -434,7 +438,8 @@ TEST_CASE("best's cylinder follows a target whose width changes as it turns", "[
   CHECK(s.allocations == 0);
 }
 
-TEST_CASE("best's cylinder grows back when a flat target turns face-on again", "[core][e2e][occlude]") {
+TEST_CASE("best's cylinder grows back when a flat target turns face-on again",
+          "[core][e2e][occlude]") {
   // A flat box turns from face-on (68 px) to 78 degrees (26 px, frame ~80) and back to
   // face-on by frame 149. Once the estimate had fallen to under half the target's width,
   // the silhouette's default window could not hold it, and the box stayed ~26 px wide
