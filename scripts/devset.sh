@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The development set in one command: cuetrack-bench over every sequence of
-# ../shared/data/otb (13 real videos), ../shared/data/bobot (BoBoT C, E, H), the
-# synthetic RGB-D scenes of cuetrack-synth --list (16) and, when
-# ../shared/data/kinect-stills is there, 4 synthetic scenes in real Kinect stills
-# (still:, scripts/still_seqs.sh): 36 sequences, CONFIG... (default: best 1.1) with 5
-# seeds each, beside OpenCV's CSRT, KCF and MedianFlow (deterministic: run once, cached).
+# ../shared/data/otb (the real videos), ../shared/data/bobot (BoBoT C, E, H), every
+# synthetic RGB-D scene of cuetrack-synth --list and, when ../shared/data/kinect-stills
+# is there, the synthetic scenes in real Kinect stills of scripts/still_seqs.sh (still:),
+# CONFIG... (default: best 1.1) with 5 seeds each, beside OpenCV's CSRT, KCF and
+# MedianFlow (deterministic: run once, cached). It prints how many sequences it ran.
 #
 #   scripts/devset.sh [CONFIG...]        e.g. scripts/devset.sh best best-nolost 1.1
 #   SET=real scripts/devset.sh best      the real videos alone (otb + BoBoT C, E, H)

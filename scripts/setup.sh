@@ -13,7 +13,7 @@ HOST_PKGS=(
   libusb-1.0-0-dev
   socat                              # pseudo-terminal pairs for serial tests
   clang libclang-rt-14-dev           # libFuzzer targets
-  clang-format                       # tests/lint: lint_format
+  clang-format                       # tests/lint: test_lint_format
   qemu-user                          # runs ARM test binaries; has the plugin API for icount
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf
   python3

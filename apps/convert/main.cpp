@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <ctime>
 #include <memory>
 #include <string>
@@ -20,8 +19,6 @@ using namespace cuetrack;
 namespace cli = cuetrack::cli;
 
 namespace {
-
-constexpr int kExitFailed = 1;
 
 FrameSlot gSlot;  // 1.5 MiB: static storage
 
@@ -73,7 +70,7 @@ int main(int argc, char** argv) {
   std::unique_ptr<FrameSource> src = openFrameSource(spec, opt, err, sizeof err);
   if (!src) {
     std::fprintf(stderr, "cuetrack-convert: %s\n", err);
-    return kExitFailed;
+    return cli::kExitFailed;
   }
   if (bench) {
     // Reading only: decode + convert into the slot, as the tracker's input path does.
@@ -86,7 +83,7 @@ int main(int argc, char** argv) {
       if (st == ReadStatus::End) break;
       if (st == ReadStatus::Error) {
         std::fprintf(stderr, "cuetrack-convert: %s\n", src->error());
-        return kExitFailed;
+        return cli::kExitFailed;
       }
       ++n;
     }
@@ -98,23 +95,15 @@ int main(int argc, char** argv) {
         src->name(), n, gSlot.rgb.width(), gSlot.rgb.height(), n > 0 ? n / s : 0.0,
         n > 0 ? 1e3 * s / n : 0.0, n > 0 && cpu > 0 ? n / cpu : 0.0, n > 0 ? 1e3 * cpu / n : 0.0,
         src->skippedFrames());
-    if (!cuetrack::platform::stdoutWritten("cuetrack-convert")) return kExitFailed;
-    return n > 0 ? 0 : kExitFailed;
+    if (!cuetrack::platform::stdoutWritten("cuetrack-convert")) return cli::kExitFailed;
+    return n > 0 ? 0 : cli::kExitFailed;
   }
-  auto sink = openSequenceOut(format.c_str(), out.c_str(), src->name(), src->nominalFps(), err,
-                              sizeof err, force);
-  if (!sink) {
-    std::fprintf(stderr, "cuetrack-convert: %s\n", err);
-    return std::strncmp(err, "unknown format", 14) == 0 ? cli::kExitUsage : kExitFailed;
-  }
-  cuetrack::platform::installStopSignals();  // an interrupted run removes its partial output
-  const int n =
-      copySequence(*src, *sink, gSlot, err, sizeof err, cuetrack::platform::stopRequested);
-  if (n < 0) {
-    std::fprintf(stderr, "cuetrack-convert: %s\n", err);
-    return kExitFailed;
-  }
+  int n = 0;
+  if (const int rc = writeSequence("cuetrack-convert", *src, format.c_str(), out.c_str(),
+                                   src->name(), force, gSlot, &n);
+      rc != 0)
+    return rc;
   std::printf("cuetrack-convert: wrote %d frames of %s to %s (%s), skipped %d\n", n, spec,
               out.c_str(), format.c_str(), src->skippedFrames());
-  return cuetrack::platform::stdoutWritten("cuetrack-convert") ? 0 : kExitFailed;
+  return cuetrack::platform::stdoutWritten("cuetrack-convert") ? 0 : cli::kExitFailed;
 }

@@ -6,8 +6,10 @@
 #include <cstdio>
 #include <cstring>
 
+#include "cuetrack/cli/Command.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 #if CUETRACK_HAVE_OPENCV
 #include "cuetrack/drivers/OpenCvSources.hpp"
 #endif
@@ -141,6 +143,24 @@ int copySequence(FrameSource& src, SequenceOut& out, FrameSlot& slot, char* err,
     return failed(out, why, err, errLen);
   }
   return n;
+}
+
+int writeSequence(const char* tool, FrameSource& src, const char* format, const char* out,
+                  const char* name, bool force, FrameSlot& slot, int* frames) {
+  char err[1024] = "";
+  auto sink = openSequenceOut(format, out, name, src.nominalFps(), err, sizeof err, force);
+  if (!sink) {
+    std::fprintf(stderr, "%s: %s\n", tool, err);
+    return std::strncmp(err, "unknown format", 14) == 0 ? cli::kExitUsage : cli::kExitFailed;
+  }
+  platform::installStopSignals();  // an interrupted run removes its partial output
+  const int n = copySequence(src, *sink, slot, err, sizeof err, platform::stopRequested);
+  if (n < 0) {
+    std::fprintf(stderr, "%s: %s\n", tool, err);
+    return cli::kExitFailed;
+  }
+  *frames = n;
+  return 0;
 }
 
 }  // namespace cuetrack

@@ -41,4 +41,12 @@ std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir
 int copySequence(FrameSource& src, SequenceOut& out, FrameSlot& slot, char* err, size_t errLen,
                  bool (*stopRequested)() = nullptr);
 
+// The write step of cuetrack-synth and cuetrack-convert: opens `format` at `out`
+// (openSequenceOut, `name` the sequence's name), copies every frame of src into it through
+// slot, a SIGINT/SIGTERM/SIGHUP removing the partial output (copySequence), and reports a
+// failure as one line "TOOL: ERROR" on stderr. Returns the exit code: 0 with the frames
+// written in *frames, 2 for an unknown format (a bad command line), 1 for any other failure.
+int writeSequence(const char* tool, FrameSource& src, const char* format, const char* out,
+                  const char* name, bool force, FrameSlot& slot, int* frames);
+
 }  // namespace cuetrack

@@ -3,7 +3,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
 #include <string>
 
@@ -18,8 +17,6 @@ using namespace cuetrack;
 namespace cli = cuetrack::cli;
 
 namespace {
-
-constexpr int kExitFailed = 1;
 
 FrameSlot gSlot;  // 1.5 MiB: static storage
 
@@ -78,7 +75,7 @@ int main(int argc, char** argv) {
   if (const int rc = cmd.parse(argc, argv); rc >= 0) return rc;
   if (list) {
     for (int k = 0; k < sceneCount(); ++k) std::printf("%s\n", sceneName(k));
-    return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : kExitFailed;
+    return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : cli::kExitFailed;
   }
   if (scene.empty() || out.empty()) return cmd.fail("--scene and --out are required (see --help)");
   SceneSpec spec;
@@ -87,21 +84,13 @@ int main(int argc, char** argv) {
   spec.width = width;
   spec.height = height;
   auto src = std::make_unique<SyntheticSource>(spec, seed);
-  auto sink = openSequenceOut(format.c_str(), out.c_str(), scene.c_str(), src->nominalFps(), err,
-                              sizeof err, force);
-  if (!sink) {
-    std::fprintf(stderr, "cuetrack-synth: %s\n", err);
-    return std::strncmp(err, "unknown format", 14) == 0 ? cli::kExitUsage : kExitFailed;
-  }
-  cuetrack::platform::installStopSignals();  // an interrupted run removes its partial output
-  const int n =
-      copySequence(*src, *sink, gSlot, err, sizeof err, cuetrack::platform::stopRequested);
-  if (n < 0) {
-    std::fprintf(stderr, "cuetrack-synth: %s\n", err);
-    return kExitFailed;
-  }
+  int n = 0;
+  if (const int rc = writeSequence("cuetrack-synth", *src, format.c_str(), out.c_str(),
+                                   scene.c_str(), force, gSlot, &n);
+      rc != 0)
+    return rc;
   std::printf("cuetrack-synth: wrote %d frames of '%s' (%dx%d, seed %llu) to %s (%s)\n", n,
               scene.c_str(), spec.width, spec.height, static_cast<unsigned long long>(seed),
               out.c_str(), format.c_str());
-  return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : kExitFailed;
+  return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : cli::kExitFailed;
 }

@@ -42,14 +42,14 @@ set(_rec ${CMAKE_CURRENT_BINARY_DIR}/recordings)
 add_executable(make_fakenect_recording make_fakenect_recording.cpp)
 target_link_libraries(make_fakenect_recording PRIVATE cuetrack_recorded cuetrack_synth cuetrack_warnings)
 # 12 frames of a moving target; and 8 frames with a 1.5 s pause after frame 3 (a stall).
-add_test(NAME kinect_make_recordings
+add_test(NAME test_kinect_make_recordings
          COMMAND ${CMAKE_COMMAND} -E rm -rf ${_rec})
-add_test(NAME kinect_make_recording_moving
+add_test(NAME test_kinect_make_recording_moving
          COMMAND make_fakenect_recording ${_rec}/moving moving 12)
-add_test(NAME kinect_make_recording_stall
+add_test(NAME test_kinect_make_recording_stall
          COMMAND make_fakenect_recording ${_rec}/stall moving 8 4 1500)
-set_tests_properties(kinect_make_recordings PROPERTIES FIXTURES_SETUP kinect_clean LABELS kinect)
-set_tests_properties(kinect_make_recording_moving kinect_make_recording_stall PROPERTIES
+set_tests_properties(test_kinect_make_recordings PROPERTIES FIXTURES_SETUP kinect_clean LABELS kinect)
+set_tests_properties(test_kinect_make_recording_moving test_kinect_make_recording_stall PROPERTIES
   FIXTURES_SETUP kinect_recordings FIXTURES_REQUIRED kinect_clean LABELS kinect TIMEOUT 300)
 
 # ---- Replay tests: one process per case (fakenect's state is global) ----------------
@@ -70,14 +70,14 @@ function(kinect_replay_test name tag recording)
     SKIP_RETURN_CODE ${CUETRACK_SKIP_RC})
 endfunction()
 
-kinect_replay_test(kinect_replay_delivers "[delivers]" ${_rec}/moving)
-kinect_replay_test(kinect_replay_tracks "[tracks]" ${_rec}/moving)
-kinect_replay_test(kinect_replay_stall "[stall]" ${_rec}/stall)
-kinect_replay_test(kinect_replay_stop "[stop]" ${_rec}/moving)
-kinect_replay_test(kinect_replay_signal "[signal]" ${_rec}/stall)
-kinect_replay_test(kinect_replay_depth_only "[depth-only]" ${_rec}/moving)
-kinect_replay_test(kinect_replay_colour_only "[colour-only]" ${_rec}/moving)
-kinect_replay_test(kinect_replay_misuse "[misuse]" ${_rec}/moving)
+kinect_replay_test(test_kinect_replay_delivers "[delivers]" ${_rec}/moving)
+kinect_replay_test(test_kinect_replay_tracks "[tracks]" ${_rec}/moving)
+kinect_replay_test(test_kinect_replay_stall "[stall]" ${_rec}/stall)
+kinect_replay_test(test_kinect_replay_stop "[stop]" ${_rec}/moving)
+kinect_replay_test(test_kinect_replay_signal "[signal]" ${_rec}/stall)
+kinect_replay_test(test_kinect_replay_depth_only "[depth-only]" ${_rec}/moving)
+kinect_replay_test(test_kinect_replay_colour_only "[colour-only]" ${_rec}/moving)
+kinect_replay_test(test_kinect_replay_misuse "[misuse]" ${_rec}/moving)
 
 set(_expect ${CUETRACK_RUN_EXPECT})
 function(kinect_record_test name run rc)
@@ -90,13 +90,13 @@ endfunction()
 if(TARGET cuetrack)
   set(_cuetrack $<TARGET_FILE:cuetrack>)
   set(_box 291,267,31,52)  # the recording's first ground-truth box
-  kinect_record_test(kinect_cuetrack_both
+  kinect_record_test(test_kinect_cuetrack_both
                      "${_run_fakenect};${_cuetrack};--source;kinect;--box;${_box};--frames;6" 0
                      "-DEXPECT_OUT=track seq=5 t=[0-9]+us tracking box=[0-9,]+ mm=-?[0-9]+,")
-  kinect_record_test(kinect_cuetrack_colour_only
+  kinect_record_test(test_kinect_cuetrack_colour_only
                      "${_run_fakenect};${_cuetrack};--source;kinect:colour;--box;${_box};--frames;6" 0
                      "-DEXPECT_OUT=track seq=5 t=[0-9]+us tracking box=[0-9,]+ mm=- ")
-  set_tests_properties(kinect_cuetrack_both kinect_cuetrack_colour_only PROPERTIES
+  set_tests_properties(test_kinect_cuetrack_both test_kinect_cuetrack_colour_only PROPERTIES
     ENVIRONMENT "FAKENECT_PATH=${_rec}/moving;${_fakenect_env}"
     FIXTURES_REQUIRED kinect_recordings)
 endif()
@@ -107,33 +107,33 @@ if(NOT TARGET cuetrack-record)
 endif()
 set(_record $<TARGET_FILE:cuetrack-record>)
 
-kinect_record_test(kinect_record_help "${_run_plain};${_record};--help" 0
+kinect_record_test(test_kinect_record_help "${_run_plain};${_record};--help" 0
                    "-DEXPECT_OUT=usage: cuetrack-record.*Exit codes")
-kinect_record_test(kinect_record_bad_args "${_run_plain};${_record};--out;x;--frames;zero" 2
+kinect_record_test(test_kinect_record_bad_args "${_run_plain};${_record};--out;x;--frames;zero" 2
                    -DONE_LINE_ERR=ON "-DEXPECT_ERR=--frames")
 # This machine has no Kinect: one clear line and exit code 1 (skip where one is plugged in).
-kinect_record_test(kinect_record_no_kinect
+kinect_record_test(test_kinect_record_no_kinect
                    "${_run_plain};${_record};--frames;1;--out;${CMAKE_CURRENT_BINARY_DIR}/no-kinect" 1
                    -DONE_LINE_ERR=ON "-DEXPECT_ERR=no Kinect found|could not initialise USB")
 # Record a fakenect replay with cuetrack-record, then compare the copy with the original.
-kinect_record_test(kinect_record_replay
+kinect_record_test(test_kinect_record_replay
                    "${_run_fakenect};${_record};--out;${_rec}/copy" 0
                    "-DEXPECT_ERR=12 frames" -DCLEAN_DIR=${_rec}/copy)
-set_tests_properties(kinect_record_replay PROPERTIES
+set_tests_properties(test_kinect_record_replay PROPERTIES
   ENVIRONMENT "FAKENECT_PATH=${_rec}/moving;${_fakenect_env}"
   FIXTURES_REQUIRED kinect_recordings FIXTURES_SETUP kinect_copy)
-kinect_replay_test(kinect_record_copy_matches "[copy]" ${_rec}/moving "CUETRACK_KINECT_COPY=${_rec}/copy")
-set_tests_properties(kinect_record_copy_matches PROPERTIES FIXTURES_REQUIRED "kinect_recordings;kinect_copy")
+kinect_replay_test(test_kinect_record_copy_matches "[copy]" ${_rec}/moving "CUETRACK_KINECT_COPY=${_rec}/copy")
+set_tests_properties(test_kinect_record_copy_matches PROPERTIES FIXTURES_REQUIRED "kinect_recordings;kinect_copy")
 
 if(TARGET cuetrack_recorded_cv)
-  kinect_record_test(kinect_record_replay_rgbd
+  kinect_record_test(test_kinect_record_replay_rgbd
                      "${_run_fakenect};${_record};--format;rgbd;--frames;5;--out;${_rec}/copy-rgbd" 0
                      "-DEXPECT_ERR=5/5 frames" -DCLEAN_DIR=${_rec}/copy-rgbd)
-  set_tests_properties(kinect_record_replay_rgbd PROPERTIES
+  set_tests_properties(test_kinect_record_replay_rgbd PROPERTIES
     ENVIRONMENT "FAKENECT_PATH=${_rec}/moving;${_fakenect_env}"
     FIXTURES_REQUIRED kinect_recordings FIXTURES_SETUP kinect_copy_rgbd)
-  kinect_replay_test(kinect_record_rgbd_matches "[copy-rgbd]" ${_rec}/moving
+  kinect_replay_test(test_kinect_record_rgbd_matches "[copy-rgbd]" ${_rec}/moving
                      "CUETRACK_KINECT_COPY=${_rec}/copy-rgbd")
-  set_tests_properties(kinect_record_rgbd_matches PROPERTIES
+  set_tests_properties(test_kinect_record_rgbd_matches PROPERTIES
     FIXTURES_REQUIRED "kinect_recordings;kinect_copy_rgbd")
 endif()

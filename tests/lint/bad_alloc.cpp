@@ -1,4 +1,4 @@
-// Deliberately allocating code: the symbol check (lint_symbols_control) must reject
+// Deliberately allocating code: the symbol check (test_lint_symbols_control) must reject
 // the library built from this file. Never linked into anything.
 #include <cstdlib>
 

@@ -3,7 +3,7 @@
 //   AllocScope scope;            // starts counting
 //   tracker.update(frame);
 //   REQUIRE(scope.allocations() == 0);
-// A positive control belongs in every test that relies on it (see test_alloc_counter.cpp).
+// A positive control belongs in every test that relies on it (see test_lint_alloc_counter.cpp).
 #pragma once
 
 #include <cstdint>

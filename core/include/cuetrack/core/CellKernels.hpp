@@ -3,7 +3,7 @@
 // 0..n-1), kLutCells for windows with valid[i] == 0. Returns how many windows (in visiting
 // order) it coded. `scalar` is the reference: all n windows, any kind. The SIMD versions
 // code Gray and Colour features 4 windows per instruction with the scalar operations per
-// lane, bit-exact (tests/simd/test_cell_kernels): n rounded down to a multiple of 4
+// lane, bit-exact (tests/simd/test_simd_cells): n rounded down to a multiple of 4
 // windows, and none of a Depth feature.
 #pragma once
 

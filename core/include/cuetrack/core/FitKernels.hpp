@@ -2,7 +2,7 @@
 // a fitted lognormal's density at each step, and the baked GentleBoost value of each
 // table cell. Every step is independent, so the SIMD versions compute 4 steps per
 // instruction with exactly the scalar operations in the scalar order: bit-exact
-// (tests/simd/test_fit_kernels). `scalar` is the reference.
+// (tests/simd/test_simd_fit). `scalar` is the reference.
 //   densRow  out[q] = norm * fastExp((k * d) * d), d = lnm[q] - mu
 //   bakeRow  out[q] = (p - m) / ((p + m) + eps),
 //            p = (wc[q] dp0[q] + wa[q] dp1[q]) + wb[q] dp2[q], m likewise with dn0..dn2

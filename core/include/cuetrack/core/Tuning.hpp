@@ -95,9 +95,9 @@ inline constexpr int kProbationFrames = 8;   // then one frame under kFoundAbove
 inline constexpr float kFoundMargin = 0.15f;
 inline constexpr float kTypicalRate = 0.1f;  // weight of the latest frame in that running mean
 // PeakContrast: an estimate scoring less than this [score units, c in -1..1] above the
-// windows one side away does not stand out from its surroundings: a miss. Targets
-// tracked on the development set sit at ~1 (synthetic scenes 0.9-1.3, OTB 0.4-3); a box
-// on a plain wall at 0.00.
+// windows one side away does not stand out from its surroundings: a miss. A tracked
+// target stands out by about 1 (less on real video, more on the synthetic scenes); a box
+// on a plain wall by nothing.
 inline constexpr float kMinContrast = 0.1f;
 }  // namespace lost
 
@@ -113,16 +113,16 @@ inline constexpr float kInside = 0.8f;         // a window must lie this much in
 
 namespace correlation {  // CorrelationCue (correlationCue)
 // Particle weights: w = exp(kWeightGain (c - c_max) + kResponseGain (r - r_max)), r in
-// [-1, 1] the template's NCC at the particle's centre. 3, 6 and 12 gave 66.6, 65.2 and 66.3
-// on the development set (docs/experiments.md): the cue matters, its gain hardly.
+// [-1, 1] the template's NCC at the particle's centre. 3, 6 and 12 gave about the same
+// (docs/experiments.md): the cue matters, its gain hardly.
 inline constexpr float kResponseGain = 3.f;
-// One particle in kEvery is drawn at the map's peak when the peak reaches kMinPeak (0.5:
-// 66.6, and a weak peak on a small target sent Skiing from 8 to 3).
+// One particle in kEvery is drawn at the map's peak when the peak reaches kMinPeak (at 0.5
+// a weak peak on a small, turning target pulled the cloud off it; docs/experiments.md).
 inline constexpr float kMinPeak = 0.7f;
 inline constexpr int kEvery = 20;
 inline constexpr int kSlot = 3;  // ... i % kEvery == kSlot (FastMotion's jumpers are 1, 11, ...)
-// The template follows the target's appearance on learnt frames at this rate (0.05: 64.3,
-// 0.2: 66.0 with a gain of 6).
+// The template follows the target's appearance on learnt frames at this rate (0.05 and 0.2
+// did no better; docs/experiments.md).
 inline constexpr float kLearnRate = 0.1f;
 // While lost, this many tiles of the image (each 3 x 3 sides of the last learnt window,
 // one search() each) are searched a frame: a 640x480 image in 2-10 frames.
@@ -141,7 +141,7 @@ inline constexpr float kScaleStep = 1.04f;
 inline constexpr float kScalePenalty = 0.98f;
 // Particles are drawn at the filter's peak whatever its height (the classifier judges
 // them): the peak of a target blurred by a jump is low (0.15 against 0.5-0.6 on Jumping)
-// yet in the right place. 0.3: 46.3, 0.1: 47.9, 0: 48.8 on the real videos (1-3 seeds).
+// yet in the right place. A minimum of 0.3 or 0.1 did worse (docs/experiments.md).
 inline constexpr float kMinPeak = 0.f;
 // The filter learns at this rate on every tracked frame (not only on learnt ones).
 inline constexpr float kLearnRate = 0.05f;
@@ -154,8 +154,8 @@ inline constexpr float kJumpRatio = 0.75f;
 // Found again nearer than 1 / kFoundRatio or farther than kFoundRatio times the confirmed
 // depth: the search has found the floor or a wall behind (issue 30's leave-return and the
 // real-still occlusion found textures at twice the depth), or the look-alike in front
-// (lookalike: at 1.6 m against 2.4 m), not the target. The jump guard's ratio (1.5: 66.50
-// on the development set, 1.33: 66.62).
+// (lookalike: at 1.6 m against 2.4 m), not the target. The jump guard's ratio (1.5 did a
+// little worse; docs/experiments.md).
 inline constexpr float kFoundRatio = 1.f / kJumpRatio;
 }  // namespace depthGuard
 

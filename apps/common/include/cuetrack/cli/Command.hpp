@@ -19,7 +19,8 @@
 
 namespace cuetrack::cli {
 
-inline constexpr int kExitUsage = 2;  // a bad command line, in every tool
+inline constexpr int kExitFailed = 1;  // the run failed (a source, device or write), in every tool
+inline constexpr int kExitUsage = 2;   // a bad command line, in every tool
 
 // How a bad value is quoted in the error line: --frames 'abc' or --frames abc (each tool
 // keeps the form its messages, scripts and tests have always had).

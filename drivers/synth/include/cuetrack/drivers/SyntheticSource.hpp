@@ -8,7 +8,7 @@
 //   while (src.next(slot) == ReadStatus::Ok) { slot.groundTruth; src.truth().centreMm; }
 //
 // Deterministic by seed: same spec + seed -> same bytes, on x86-64, aarch64 and armhf
-// alike (built with -ffp-contract=off; golden hashes in tests/drivers/test_synth.cpp).
+// alike (built with -ffp-contract=off; golden hashes in tests/drivers/test_drivers_synth.cpp).
 // No OpenCV, no allocation after construction: it is also the on-board app's embedded
 // default source.
 //

@@ -1,4 +1,4 @@
-// Our MAVLink 2 code on its own (the official library's view is test_mavlink_interop):
+// Our MAVLink 2 code on its own (the official library's view is test_platform_mavlink_official):
 // CRC, framing, truncation, the parser's resync, payload layouts, the camera mount, and
 // MavlinkLink's behaviour over an in-memory cable with a fake clock.
 #include <catch2/catch.hpp>
