@@ -197,7 +197,7 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
     _boxes[i] = particleBox(q);
   }
   // The cue searches around the last estimate; lost, the whole image, a few tiles a frame.
-  const bool aroundLast = _cue.enabled() && !wasLost && _cue.anyReady();
+  const bool aroundLast = _cue.enabled() && !wasLost && _cue.ready();
   const Box cueRegion = aroundLast ? _cue.region(_lastBox) : Box{};
   return SearchRegion::of(_boxes, n, aroundLast ? &cueRegion : nullptr, _cue.enabled() && wasLost,
                           _imageW, _imageH);

@@ -184,6 +184,19 @@ TEST_CASE("the same seed gives the same track bit for bit", "[core][tracker]") {
   REQUIRE(run(cfg2, 5, frames, false).hash == run(cfg2, 5, frames, false).hash);
 }
 
+// A track depends on its own frames, seed and configuration, not on the tracks the same
+// Tracker ran before (the benchmark and the app's re-selection re-init one tracker): a
+// model left by an earlier track's cue must not reach this one's search region.
+TEST_CASE("a track does not depend on the tracks before it", "[core][tracker]") {
+  const TrackerConfig best = presetConfig(Preset::Best);
+  (void)run(presetConfig(Preset::Test1_1), 7, 4, false);  // no appearance cue
+  const RunStats fresh = run(best, 99, 12, true);
+  (void)run(best, 7, 4, false);  // best in 2D: its correlation filter learns a model
+  const RunStats after2d = run(best, 99, 12, true);
+  INFO("hashes " << fresh.hash << " " << after2d.hash);
+  REQUIRE(fresh.hash == after2d.hash);
+}
+
 // The same bits on x86, aarch64 and armhf (the cross builds run this under qemu): the
 // values below were recorded on x86-64 and must not change unless the algorithm does.
 TEST_CASE("tracks are identical on every platform", "[core][tracker][golden]") {

@@ -32,9 +32,6 @@ class AppearanceCue {
     return _filter ? _dcf.search(rgb, around, scales) : _corr.search(t, around);
   }
   bool ready() const { return _filter ? _dcf.ready() : _corr.ready(); }
-  // Either cue holds a model, this track's or one left by an earlier track: the test the
-  // search region has always made, kept so that no track changes by a bit.
-  bool anyReady() const { return _corr.ready() || _dcf.ready(); }
   float peak() const { return _filter ? _dcf.peak() : _corr.peak(); }
   Box peakBox() const { return _filter ? _dcf.peakBox() : _corr.peakBox(); }
   // The peak that is taken for the target (particles are drawn at it).
