@@ -260,6 +260,10 @@ TEST_CASE("--snapshot writes the first frame with a 40 px grid, at the frame's s
     }
   CHECK(differ < looked / 100);  // antialiased label edges at most
 
+  // --snapshot tracks nothing: it needs no way to a target (--no-gt, or a live camera).
+  REQUIRE(run({CUETRACK_APP_BIN, "--source", "synth:moving", "--no-gt", "--snapshot", png.c_str()},
+              out, err) == 0);
+
   // A path that cannot be written: one line naming it, exit 3.
   REQUIRE(run({CUETRACK_APP_BIN, "--source", "synth:moving", "--snapshot", "/nonexistent/x.png"},
               out, err) == 3);

@@ -58,6 +58,11 @@ bool userTargetPossible(const AppOptions& opt) {
   return opt.hasBox || opt.select || opt.serialPath || opt.mavlinkUdp;
 }
 
+// --source kinect or kinect:colour: a live camera, which has no ground truth.
+bool liveCamera(const AppOptions& opt) {
+  return opt.source && std::strncmp(opt.source, "kinect", 6) == 0;
+}
+
 // The command line and all that can be refused before anything opens (exit 2): a bad
 // option, a readable signing key, an output that is also an input, a baud rate, a view or
 // a camera this build lacks. Fills key with the MAVLink signing key when one is given.
@@ -113,8 +118,9 @@ int checkCommandLine(int argc, char** argv, AppOptions& opt, uint8_t (&key)[32],
   }
   // No way for a target to arrive: the run would stay idle to its end. A live camera has
   // no ground truth; --no-gt drops it. (A source without it is found on its first frame.)
-  if (!userTargetPossible(opt)) {
-    const bool live = opt.source && std::strncmp(opt.source, "kinect", 6) == 0;
+  // --snapshot tracks nothing: it needs none.
+  if (!userTargetPossible(opt) && !opt.snapshotPath) {
+    const bool live = liveCamera(opt);
     if (!opt.useGroundTruth || live) {
       std::snprintf(err, sizeof err, "%s: nothing to track%s; %s", live ? opt.source : "--no-gt",
                     live ? " (a live camera has no ground truth)" : "", kWaysToATarget);
@@ -155,8 +161,8 @@ FrameSource* openFrameSource(AppOptions& opt, const Clock& clock, platform::Slee
 int checkGroundTruth(const AppOptions& opt, const char* groundTruthName, FrameSource*& source,
                      FrameSlot& slot, bool* groundTruth, platform::Reporter& reporter) {
   *groundTruth = false;
-  const bool live = opt.source && std::strncmp(opt.source, "kinect", 6) == 0;  // none, ever
-  if (opt.hasBox || opt.select || opt.snapshotPath || !opt.useGroundTruth || live) return kGoOn;
+  if (opt.hasBox || opt.select || opt.snapshotPath || !opt.useGroundTruth || liveCamera(opt))
+    return kGoOn;
   const char* name = opt.source ? opt.source : source->name();
   char err[1024] = "";
   const ReadStatus rs = source->next(slot);
