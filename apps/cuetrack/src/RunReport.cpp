@@ -21,7 +21,12 @@ void describeTarget(const AppOptions& opt, const char* groundTruthName, bool gro
     std::snprintf(out, n, "ground truth (%.400s) where the target first shows%s", groundTruthName,
                   orStart);
   } else {  // App.cpp refused a run with no way to a target at all
-    std::snprintf(out, n, "waiting for a START on the link (or give --box / --select)");
+    const size_t len = std::strlen(groundTruthName);
+    const bool missingFile =
+        opt.useGroundTruth && len > 4 && std::strcmp(groundTruthName + len - 4, ".txt") == 0;
+    std::snprintf(out, n, "waiting for a START on the link (%s%.400s%sor give --box / --select)",
+                  missingFile ? "no ground truth: " : "", missingFile ? groundTruthName : "",
+                  missingFile ? " not found; " : "");
   }
 }
 
