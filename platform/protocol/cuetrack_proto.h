@@ -88,7 +88,7 @@ typedef struct {
   uint64_t time_us;     /* frame capture time [us] */
   uint8_t state;        /* CTP_STATE_* */
   uint8_t flags;        /* CTP_FLAG_* */
-  int16_t box_px[4];    /* x, y (top-left), w, h [px] */
+  int16_t box_px[4];    /* x, y (top-left), w, h [px]; lost/searching: the last confirmed */
   int32_t centre_mm[3]; /* x right, y down, z forward, camera frame [mm] */
   uint16_t confidence;  /* 0..65535 = 0..1 */
   uint32_t proc_us;     /* processing time of this frame [us] */

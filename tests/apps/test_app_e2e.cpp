@@ -8,6 +8,7 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <random>
@@ -421,6 +422,48 @@ TEST_CASE("a recording whose frames change size, or whose ground truth is refuse
   CHECK(status == 4);
   CHECK(slurp(appErr).find(gt + "/groundtruth.txt: frame 0: box -320,240,32,48 refused") !=
         std::string::npos);
+}
+
+TEST_CASE("no way for a target to arrive is exit 2 in one line; a failed run has no summary") {
+  TempDir tmp;
+  const std::string rec = tmp.file("rec"), err = tmp.file("err"), out = tmp.file("out");
+  const std::string make = std::string(CUETRACK_SYNTH_BIN) + " --scene moving --frames 4 --out " +
+                           rec + " >/dev/null && rm " + rec + "/groundtruth.txt";
+  REQUIRE(std::system(make.c_str()) == 0);
+  auto runApp = [&](std::vector<const char*> argv) {
+    argv.push_back(nullptr);
+    ChildProcess p;
+    REQUIRE(p.start(argv.data(), out.c_str(), err.c_str()));
+    int status = -1;
+    REQUIRE(p.wait(kAppTimeoutMs, &status));
+    return status;
+  };
+  // A recording without ground truth, no --box, --select or link: before any banner.
+  CHECK(runApp({CUETRACK_APP_BIN, "--source", rec.c_str()}) == 2);
+  CHECK(slurp(err) == "cuetrack: " + rec + ": nothing to track: no ground truth (" + rec +
+                          "/groundtruth.txt not found); give --box X,Y,W,H, --select, or a link "
+                          "for a START (--serial DEV, --mavlink-udp HOST:PORT)\n");
+  CHECK(slurp(out).empty());
+  for (const std::vector<const char*>& args :
+       {std::vector<const char*>{CUETRACK_APP_BIN, "--no-gt", "--frames", "3"},
+        std::vector<const char*>{CUETRACK_APP_BIN, "--source", "kinect"}}) {
+    CHECK(runApp(args) == 2);
+    const std::string e = slurp(err);
+    INFO(e);
+    CHECK(std::count(e.begin(), e.end(), '\n') == 1);
+    CHECK(e.find(": nothing to track") != std::string::npos);
+  }
+  // With a box it runs, and the banner names no ground-truth file.
+  CHECK(runApp({CUETRACK_APP_BIN, "--source", rec.c_str(), "--box", "291,266,30,52"}) == 0);
+  CHECK(slurp(err).find("groundtruth.txt") == std::string::npos);
+  // A failed run (the box refused, exit 4): its line, no summary, no next: line.
+  CHECK(runApp({CUETRACK_APP_BIN, "--source", rec.c_str(), "--box", "700,10,30,30"}) == 4);
+  const std::string e = slurp(err);
+  INFO(e);
+  CHECK(e.find("--box 700,10,30,30 refused by the tracker: box does not intersect the image (the "
+               "image is 640x480)") != std::string::npos);
+  CHECK(e.find("summary:") == std::string::npos);
+  CHECK(e.find("next:") == std::string::npos);
 }
 
 TEST_CASE("cuetrack-listen exits 1 naming the port when it goes away") {

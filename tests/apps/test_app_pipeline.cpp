@@ -4,6 +4,8 @@
 // a stalled or vanished peer and failing outputs.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "AllocCounter.hpp"
@@ -11,10 +13,12 @@
 #include "Pipeline.hpp"
 #include "SerialLink.hpp"
 #include "WaitingSource.hpp"
+#include "cuetrack/platform/TrackText.hpp"
 #include "cuetrack/platform/fake/FakeClock.hpp"
 #include "cuetrack/platform/fake/FakeSerial.hpp"
 #include "cuetrack/platform/fake/MemoryReporter.hpp"
 #include "cuetrack/platform/fake/MemorySink.hpp"
+#include "cuetrack/platform/mavlink/MavlinkLink.hpp"
 #include "fc_link.h"
 
 using namespace cuetrack;
@@ -255,8 +259,27 @@ TEST_CASE("--box wins over ground truth; a refused --box ends the run with BoxRe
   o.box.x = -50.f;
   static Rig bad(3, true, o);
   REQUIRE(bad.step() == StepResult::BoxRejected);
-  CHECK(bad.reporter.countContaining("--box -50,5,8,8 refused by the tracker: BoxOutsideImage") ==
+  // The line says the image's size: what the box had to fit.
+  CHECK(bad.reporter.countContaining(
+            "--box -50,5,8,8 refused by the tracker: BoxOutsideImage (the image is 64x48)") == 1);
+}
+
+TEST_CASE("a --box or START that reads as corners X0,Y0,X1,Y1 is named, with its X,Y,W,H") {
+  PipelineOptions o;
+  o.warnPoorTarget = true;  // user boxes are checked
+  o.hasBox = true;
+  o.box = Box{20.f, 10.f, 50.f, 40.f};  // runs past 64x48 as X,Y,W,H; fits as corners
+  static Rig rig(3, true, o);
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.reporter.countContaining("--box 20,10,50,40 runs past the 64x48 image as X,Y,W,H; if "
+                                     "50,40 is the bottom-right corner, the box is 20,10,30,30") ==
         1);
+  rig.host.send(startCommand(3, 4, 6, 60, 46));
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.reporter.countContaining("START 4,6,60,46 runs past the 64x48 image") == 1);
+  rig.host.send(startCommand(4, 30, 5, 20, 20));  // inside: nothing said
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.reporter.countContaining("runs past") == 2);
 }
 
 TEST_CASE("a poor target from START or --box is warned about in one line, and still tracked") {
@@ -909,4 +932,147 @@ TEST_CASE("the flight controller's example, on the other end of the cable, steer
   pump();
   CHECK(fc.acks == 2);
   CHECK(fc.errors == 0);
+}
+
+namespace {
+
+// A tracker that plays a script of results, one per update: the target seen, then behind
+// something (occluded), then lost with the lost search's box jumping about, as the core's
+// does (a corner, partly off the image).
+class ScriptTracker final : public TrackerPort {
+ public:
+  static constexpr int kSteps = 5;
+  bool configure(const char*, uint64_t, const Clock*) override { return true; }
+  int init(const Frame&, const Box&, const char**) override { return 0; }
+  TrackResult update(const Frame&) override {
+    TrackResult r;
+    r.confidence = 0.5f;
+    r.hasPosition3d = true;
+    r.positionMm[2] = 2000.f;
+    switch (_step++) {
+      case 0:  // seen: the last confirmed box
+        r.state = TrackState::Tracking;
+        r.box = Box{11.f, 12.f, 20.f, 16.f};
+        r.positionMm[0] = 110.f;
+        break;
+      case 1:  // behind something: where it went, not seen
+        r.state = TrackState::Tracking;
+        r.occluded = true;
+        r.box = Box{14.f, 12.f, 20.f, 16.f};
+        r.positionMm[0] = 140.f;
+        break;
+      case 2:
+      case 3:  // lost: the search's boxes
+        r.state = TrackState::Lost;
+        r.box = _step == 3 ? Box{43.f, -9.f, 30.f, 30.f} : Box{-20.f, 40.f, 30.f, 30.f};
+        r.positionMm[0] = -900.f;
+        break;
+      default:  // found again
+        r.state = TrackState::Tracking;
+        r.box = Box{30.f, 20.f, 20.f, 16.f};
+        r.positionMm[0] = 300.f;
+        break;
+    }
+    return r;
+  }
+  void reset() override {}
+
+ private:
+  int _step = 0;
+};
+
+// The frames' states as sent: tracking (init), tracking, occluded, lost, searching, tracking.
+constexpr int kScriptFrames = 1 + ScriptTracker::kSteps;
+
+}  // namespace
+
+TEST_CASE("while lost, every output carries the last confirmed box with the lost state") {
+  // stdout and CSV (the sink), and the serial link, decoded by the protocol's decoder.
+  {
+    static FakeClock clock{1000};
+    static MemoryReporter reporter;
+    static TinySource source(kScriptFrames, true);
+    static ScriptTracker script;
+    static FakeSerialCable cable;
+    static SerialLink link(cable.a(), clock, reporter);
+    static Host host(cable.b());
+    static Pipeline pipeline(source, Rig::slot(), script, clock, reporter, {});
+    static MemorySink sink;
+    pipeline.addSink(&sink);
+    pipeline.attachLink(&link);
+    for (int i = 0; i < kScriptFrames; ++i) {
+      clock.advanceUs(33333);
+      REQUIRE(pipeline.step() == StepResult::Continue);
+    }
+    std::vector<ctp_track_t> sent;
+    for (const ctp_message_t& m : host.drain())
+      if (m.type == CTP_MSG_TRACK) sent.push_back(m.u.track);
+    REQUIRE(sent.size() == kScriptFrames);
+    REQUIRE(sink.size() == kScriptFrames);
+    const uint8_t states[kScriptFrames] = {CTP_STATE_TRACKING,  CTP_STATE_TRACKING,
+                                           CTP_STATE_TRACKING,  CTP_STATE_LOST,
+                                           CTP_STATE_SEARCHING, CTP_STATE_TRACKING};
+    for (int i = 0; i < kScriptFrames; ++i) {
+      INFO("frame " << i);
+      for (const ctp_track_t& t : {sink.at(static_cast<size_t>(i)), sent[static_cast<size_t>(i)]}) {
+        CHECK(t.state == states[i]);
+        CHECK(((t.flags & CTP_FLAG_OCCLUDED) != 0) == (i == 2));
+        if (i == 3 || i == 4) {  // frame 1's box and centre, never the search's
+          CHECK(t.box_px[0] == 11);
+          CHECK(t.box_px[1] == 12);
+          CHECK(t.box_px[2] == 20);
+          CHECK(t.box_px[3] == 16);
+          CHECK(t.centre_mm[0] == 110);
+          CHECK((t.flags & CTP_FLAG_HAS_3D) != 0);
+        }
+      }
+    }
+    CHECK(sent[5].box_px[0] == 30);  // found again: the new box
+    // The text forms (stdout's line, the CSV row) of a lost frame.
+    char line[256];
+    REQUIRE(formatTrackLine(sink.at(3), line, sizeof line) > 0);
+    CHECK(std::string(line).find(" lost box=11,12,20,16 ") != std::string::npos);
+    REQUIRE(formatTrackCsvRow(sink.at(4), line, sizeof line) > 0);
+    CHECK(std::string(line).find(",searching,11,12,20,16,") != std::string::npos);
+  }
+  // MAVLink: lost is ERROR with no box (NaN, MAVLink's "unknown"), and no LANDING_TARGET.
+  {
+    static FakeClock clock{1000};
+    static MemoryReporter reporter;
+    static TinySource source(kScriptFrames, true);
+    static ScriptTracker script;
+    static FakeSerialCable cable;
+    static mavlink::MavlinkLink link(cable.a(), clock, reporter, mavlink::LinkConfig{});
+    static Pipeline pipeline(source, Rig::slot(), script, clock, reporter, {});
+    pipeline.attachLink(&link);
+    Rig::slot().intrinsics = kKinectV1Intrinsics;  // LANDING_TARGET needs them; kept by TinySource
+    static mavlink::Parser parser;
+    std::vector<mavlink::CameraTrackingImageStatus> status;
+    std::vector<int> landingFrames;
+    for (int i = 0; i < kScriptFrames; ++i) {
+      clock.advanceUs(33333);
+      REQUIRE(pipeline.step() == StepResult::Continue);
+      uint8_t buf[512];
+      mavlink::Message m;
+      for (IoResult r; (r = cable.b().read(buf, sizeof buf, 0)).bytes > 0;) {
+        for (size_t k = 0; k < r.bytes; ++k) {
+          if (!parser.push(buf[k], &m)) continue;
+          if (m.header.msgId == mavlink::kMsgCameraTrackingImageStatus)
+            status.push_back(mavlink::unpackCameraTrackingImageStatus(m.payload));
+          if (m.header.msgId == mavlink::kMsgLandingTarget) landingFrames.push_back(i);
+        }
+      }
+    }
+    REQUIRE(status.size() == kScriptFrames);
+    for (int i : {3, 4}) {
+      INFO("frame " << i);
+      CHECK(status[static_cast<size_t>(i)].trackingStatus == mavlink::kTrackingStatusError);
+      CHECK(std::isnan(status[static_cast<size_t>(i)].recTopX));
+      CHECK(std::isnan(status[static_cast<size_t>(i)].pointX));
+    }
+    CHECK(status[5].trackingStatus == mavlink::kTrackingStatusActive);
+    REQUIRE(!landingFrames.empty());  // sent while tracking in 3D...
+    CHECK(landingFrames.front() == 1);
+    for (int i : landingFrames) CHECK((i != 3 && i != 4));  // ...never while lost
+  }
 }

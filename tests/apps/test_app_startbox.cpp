@@ -1,8 +1,10 @@
-// Start requests into the pixel box the tracker starts on (StartBox).
+// Start requests into the pixel box the tracker starts on (StartBox); a typed box that
+// reads as corners (BoxFit).
 #include <catch2/catch.hpp>
 
 #include <vector>
 
+#include "BoxFit.hpp"
 #include "StartBox.hpp"
 
 using namespace cuetrack;
@@ -67,4 +69,21 @@ TEST_CASE("a point becomes a square sized from the depth there, else the radius,
   CHECK(startBoxPx(r, tf.frame(true)).w == Approx(240));  // half the image height
   for (uint16_t& v : tf.depth) v = v ? 60000 : 0;
   CHECK(startBoxPx(r, tf.frame(true)).w == Approx(kPointMinSidePx));
+}
+
+TEST_CASE("a box that runs past the image as X,Y,W,H but fits as corners reads as corners") {
+  Box xywh{};
+  // 100,80 to 600,400 typed as corners on 640x480.
+  REQUIRE(looksLikeCorners(Box{100, 80, 600, 400}, 640, 480, &xywh));
+  CHECK(xywh.x == 100);
+  CHECK(xywh.y == 80);
+  CHECK(xywh.w == 500);
+  CHECK(xywh.h == 320);
+  CHECK(looksLikeCorners(Box{10, 300, 100, 400}, 640, 480, &xywh));  // runs past the bottom
+  // Inside the image: X,Y,W,H as given, whatever the numbers.
+  CHECK_FALSE(looksLikeCorners(Box{100, 80, 200, 150}, 640, 480, &xywh));
+  // Past the edge, but not corners: a box reaching out (x1 <= x0), or too large as corners.
+  CHECK_FALSE(looksLikeCorners(Box{600, 10, 100, 100}, 640, 480, &xywh));
+  CHECK_FALSE(looksLikeCorners(Box{100, 80, 700, 400}, 640, 480, &xywh));
+  CHECK_FALSE(looksLikeCorners(Box{-10, 80, 600, 400}, 640, 480, &xywh));
 }

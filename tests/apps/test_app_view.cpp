@@ -260,6 +260,10 @@ TEST_CASE("--snapshot writes the first frame with a 40 px grid, at the frame's s
     }
   CHECK(differ < looked / 100);  // antialiased label edges at most
 
+  // --snapshot tracks nothing: it needs no way to a target (--no-gt, or a live camera).
+  REQUIRE(run({CUETRACK_APP_BIN, "--source", "synth:moving", "--no-gt", "--snapshot", png.c_str()},
+              out, err) == 0);
+
   // A path that cannot be written: one line naming it, exit 3.
   REQUIRE(run({CUETRACK_APP_BIN, "--source", "synth:moving", "--snapshot", "/nonexistent/x.png"},
               out, err) == 3);
@@ -462,4 +466,82 @@ TEST_CASE("under Xvfb: --select takes the box a mouse drag draws, with and witho
     REQUIRE(rows.size() >= 2);
     CHECK(contains(rows[1], ",tracking,290,265,32,54,"));  // the first frame is the picked one
   }
+}
+
+TEST_CASE("under Xvfb: Ctrl-C while the picker is open stops cleanly, with its final line") {
+  const std::string xvfbPath = onPath("Xvfb"), xdotoolPath = onPath("xdotool");
+  const char *xvfb = xvfbPath.c_str(), *xdotool = xdotoolPath.c_str();
+  if (!*xvfb || !*xdotool) CUETRACK_SKIP("Xvfb or xdotool missing (scripts/setup.sh)");
+  TempDir tmp;
+  Xvfb x(tmp);
+  REQUIRE(x.start(xvfb));
+  for (const bool show : {false, true}) {
+    INFO("--show " << show);
+    const std::string err = tmp.file("err.txt");
+    const char* argv[] = {CUETRACK_APP_BIN,          "--source", "synth:moving", "--select",
+                          show ? "--show" : nullptr, nullptr};
+    ChildProcess app;
+    REQUIRE(app.start(argv, tmp.file("out.txt").c_str(), err.c_str()));
+    REQUIRE(xtool({xdotool, "search", "--sync", "--onlyvisible", "--name", "drag a box"}, tmp));
+    app.signal(SIGINT);
+    int status = -1;
+    REQUIRE(app.wait(30000, &status));  // the picker polls the signal flag: no key needed
+    CHECK(status == 0);
+    CHECK(slurp(err).find("stopped after 0 frames (signal, while --select was open)") !=
+          std::string::npos);
+  }
+}
+
+TEST_CASE("a target that leaves: the CSV holds the last confirmed box, the video draws none") {
+  TempDir tmp;
+  const std::string avi = tmp.file("run.avi"), csv = tmp.file("t.csv");
+  REQUIRE(run({CUETRACK_APP_BIN, "--source", "synth:leave-return", "--frames", "60", "--video",
+               avi.c_str(), "--out", csv.c_str()},
+              tmp.file("out.txt"), tmp.file("err.txt")) == 0);
+  const std::vector<std::string> rows = lines(slurp(csv));
+  REQUIRE(rows.size() >= 61);
+  int firstLost = -1;
+  cv::Rect confirmed;
+  for (size_t i = 1; i <= 60; ++i) {
+    const std::string& row = rows[i];
+    char state[32];
+    int seq = 0, x = 0, y = 0, w = 0, h = 0;
+    unsigned long long t = 0;
+    REQUIRE(std::sscanf(row.c_str(), "%d,%llu,%31[^,],%d,%d,%d,%d", &seq, &t, state, &x, &y, &w,
+                        &h) == 7);
+    const size_t last = row.rfind(','), occludedAt = row.rfind(',', last - 1) + 1;
+    const bool occluded = row[occludedAt] == '1';  // ...,occluded,depth_predicted
+    if (std::string(state) == "tracking" && !occluded) confirmed = cv::Rect(x, y, w, h);
+    if (std::string(state) == "lost" || std::string(state) == "searching") {
+      if (firstLost < 0) firstLost = static_cast<int>(i) - 1;
+      INFO("row " << i << ": " << row);
+      CHECK(cv::Rect(x, y, w, h) == confirmed);  // never the search's box
+    }
+  }
+  REQUIRE(firstLost > 0);  // the scene loses it within 60 frames
+  // The video's frame there: no box where the CSV's box is, "target lost" in red on the image.
+  cv::VideoCapture video(avi);
+  REQUIRE(video.isOpened());
+  // The label's corner: red pixels (JPEG-blurred text) there while lost, none before.
+  auto redInCorner = [](const cv::Mat& f) {
+    int n = 0;
+    for (int py = 0; py < 28; ++py)
+      for (int px = 0; px < 120; ++px) {
+        const cv::Vec3b p = f.at<cv::Vec3b>(py, px);
+        n += p[2] > 180 && p[1] < 80 && p[0] < 80;
+      }
+    return n;
+  };
+  cv::Mat frame;
+  REQUIRE(video.read(frame));
+  CHECK(redInCorner(frame) == 0);
+  for (int i = 1; i <= firstLost; ++i) REQUIRE(video.read(frame));
+  int green = 0;
+  for (int py = confirmed.y - 2; py <= confirmed.y + confirmed.height + 2; ++py)
+    for (int px : {confirmed.x - 1, confirmed.x + confirmed.width}) {
+      const cv::Vec3b p = frame.at<cv::Vec3b>(py, px);
+      green += p[1] > 170 && p[0] < 90 && p[2] < 90;
+    }
+  CHECK(green == 0);
+  CHECK(redInCorner(frame) > 10);
 }

@@ -48,6 +48,21 @@ struct Outputs {
   platform::TrackLink* link = nullptr;  // serial or MAVLink, if any
 };
 
+// How a target can be given, for the line that says none can arrive.
+constexpr const char* kWaysToATarget =
+    "give --box X,Y,W,H, --select, or a link for a START (--serial DEV, --mavlink-udp "
+    "HOST:PORT)";
+
+// A target can come from the user: a box, a drag, or a START on a link.
+bool userTargetPossible(const AppOptions& opt) {
+  return opt.hasBox || opt.select || opt.serialPath || opt.mavlinkUdp;
+}
+
+// --source kinect or kinect:colour: a live camera, which has no ground truth.
+bool liveCamera(const AppOptions& opt) {
+  return opt.source && std::strncmp(opt.source, "kinect", 6) == 0;
+}
+
 // The command line and all that can be refused before anything opens (exit 2): a bad
 // option, a readable signing key, an output that is also an input, a baud rate, a view or
 // a camera this build lacks. Fills key with the MAVLink signing key when one is given.
@@ -101,6 +116,18 @@ int checkCommandLine(int argc, char** argv, AppOptions& opt, uint8_t (&key)[32],
     reporter.report("--wait-camera: this build has no Kinect driver (libfreenect missing)");
     return kExitUsage;
   }
+  // No way for a target to arrive: the run would stay idle to its end. A live camera has
+  // no ground truth; --no-gt drops it. (A source without it is found on its first frame.)
+  // --snapshot tracks nothing: it needs none.
+  if (!userTargetPossible(opt) && !opt.snapshotPath) {
+    const bool live = liveCamera(opt);
+    if (!opt.useGroundTruth || live) {
+      std::snprintf(err, sizeof err, "%s: nothing to track%s; %s", live ? opt.source : "--no-gt",
+                    live ? " (a live camera has no ground truth)" : "", kWaysToATarget);
+      reporter.report(err);
+      return kExitUsage;
+    }
+  }
   return kGoOn;
 }
 
@@ -126,9 +153,50 @@ FrameSource* openFrameSource(AppOptions& opt, const Clock& clock, platform::Slee
   return source;
 }
 
+// When the target can only come from ground truth (no --box, --select, --snapshot), the
+// first frame says whether the source has any: read into the pipeline's slot, handed on as
+// the source's first frame. Without ground truth and without a link for a START, nothing
+// could be tracked: exit 2 (a run that idles to its end and exits 0 would mislead).
+// *groundTruth: the source has it (false when not looked at: a camera waited for).
+int checkGroundTruth(const AppOptions& opt, const char* groundTruthName, FrameSource*& source,
+                     FrameSlot& slot, bool* groundTruth, platform::Reporter& reporter) {
+  *groundTruth = false;
+  if (opt.hasBox || opt.select || opt.snapshotPath || !opt.useGroundTruth || liveCamera(opt))
+    return kGoOn;
+  const char* name = opt.source ? opt.source : source->name();
+  char err[1024] = "";
+  const ReadStatus rs = source->next(slot);
+  if (rs == ReadStatus::Error) {
+    reporter.report(source->error());
+    return kExitSource;
+  }
+  if (rs == ReadStatus::End) {
+    std::snprintf(err, sizeof err, "%.400s: no decodable frame%s", name,
+                  source->skippedFrames() > 0 ? " (every one damaged, skipped)" : " (it is empty)");
+    reporter.report(err);
+    return kExitSource;
+  }
+  static PrefetchedSource prefetched(*source);
+  source = &prefetched;
+  *groundTruth = slot.hasGroundTruth;
+  if (*groundTruth || userTargetPossible(opt)) return kGoOn;
+  const size_t n = std::strlen(groundTruthName);
+  if (n > 4 && std::strcmp(groundTruthName + n - 4, ".txt") == 0) {
+    std::snprintf(err, sizeof err,
+                  "%.400s: nothing to track: no ground truth (%.400s not found); %s", name,
+                  groundTruthName, kWaysToATarget);
+  } else {
+    std::snprintf(err, sizeof err, "%.400s: nothing to track: no ground truth; %s", name,
+                  kWaysToATarget);
+  }
+  reporter.report(err);
+  return kExitUsage;
+}
+
 // --select and --snapshot work on the first frame, read here into the pipeline's slot:
 // --snapshot writes it and ends the run (exit 0), --select sets opt.box from the drag and
-// hands the source on as one whose first frame is that slot.
+// hands the source on as one whose first frame is that slot. A signal while the picker is
+// open stops the run there, cleanly (exit 0, one closing line).
 int resolveStartBox(AppOptions& opt, FrameSource*& source, FrameSlot& slot, LiveView& view,
                     platform::Reporter& reporter) {
   if (!opt.select && !opt.snapshotPath) return kGoOn;
@@ -158,8 +226,14 @@ int resolveStartBox(AppOptions& opt, FrameSource*& source, FrameSlot& slot, Live
     reporter.report(err);
     return kExitOk;
   }
-  if (!(opt.show ? view.pick(slot.frame(), &opt.box, err, sizeof err)
-                 : pickBox(slot.frame(), &opt.box, err, sizeof err))) {
+  const PickResult picked =
+      opt.show ? view.pick(slot.frame(), &platform::stopRequested, &opt.box, err, sizeof err)
+               : pickBox(slot.frame(), &platform::stopRequested, &opt.box, err, sizeof err);
+  if (picked == PickResult::Interrupted) {  // a signal: a clean stop, as in any run
+    reporter.report("stopped after 0 frames (signal, while --select was open)");
+    return kExitOk;
+  }
+  if (picked == PickResult::Cancelled) {
     reporter.report(err);
     return kExitUsage;
   }
@@ -288,6 +362,7 @@ RunEnd runLoop(const AppOptions& opt, Pipeline& pipeline, const FrameSlot& slot,
     ViewTrack vt;
     vt.frameIndex = static_cast<uint32_t>(slot.index);
     vt.state = t.state;
+    vt.flags = t.flags;
     vt.box = Box{static_cast<float>(t.box_px[0]), static_cast<float>(t.box_px[1]),
                  static_cast<float>(t.box_px[2]), static_cast<float>(t.box_px[3])};
     vt.confidence = static_cast<float>(t.confidence) / 65535.f;
@@ -393,25 +468,36 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   FrameSource* source = openFrameSource(opt, clock, sleeper, reporter);
   if (!source) return kExitSource;
   static FrameSlot slot;  // ~1.5 MiB
+  static char groundTruthName[512];
+  describeGroundTruth(opt.source, groundTruthName, sizeof groundTruthName);
+  bool groundTruth = false;
+  if (const int code = checkGroundTruth(opt, groundTruthName, source, slot, &groundTruth, reporter);
+      code != kGoOn)
+    return code;
   static LiveView view;
   char err[512] = "";
-  if (opt.show && !view.start(err, sizeof err)) {
+  if (opt.show && !view.start(&platform::stopRequested, err, sizeof err)) {
     reporter.report(err);
     return kExitUsage;
   }
-  if (const int code = resolveStartBox(opt, source, slot, view, reporter); code != kGoOn)
+  // From here an early end closes the window's thread first: Qt must not be torn down
+  // under it at exit.
+  if (const int code = resolveStartBox(opt, source, slot, view, reporter); code != kGoOn) {
+    view.close();
     return code;
+  }
   static PacedSource paced(*source, clock, sleeper, &platform::stopRequested);
   if (opt.realtime) source = &paced;  // a live Kinect is paced by its own clock anyway
 
   static Outputs out;
-  if (const int code = openOutputs(opt, *source, out, reporter); code != kGoOn) return code;
-  static char groundTruthName[512];
-  describeGroundTruth(opt.source, groundTruthName, sizeof groundTruthName);
+  if (const int code = openOutputs(opt, *source, out, reporter); code != kGoOn) {
+    view.close();
+    return code;
+  }
   Pipeline pipeline(*source, slot, tracker, clock, reporter,
                     pipelineOptions(opt, *source, groundTruthName));
   attachOutputs(opt, mavlinkKey, pipeline, out, clock, reporter);
-  if (!opt.quiet) printBanner(opt, groundTruthName, out.stdoutIsTerminal, reporter);
+  if (!opt.quiet) printBanner(opt, groundTruthName, groundTruth, out.stdoutIsTerminal, reporter);
 
   RunSummary summary;
   const RunEnd end = runLoop(opt, pipeline, slot, view, out, summary, clock, reporter);
@@ -419,11 +505,12 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   const bool empty = reportEmptySource(opt, *source, pipeline, end, reporter);
   view.close();
   const bool closed = closeOutputs(opt, out, reporter);
+  const int code =
+      empty ? kExitSource
+            : exitCode(end, pipeline.outputFailed() || !closed || (opt.videoPath && !out.videoOk));
   printSummary(opt, argv[0], pipeline, *source, out.link, summary, end, view.droppedFrames(),
-               reporter);
-
-  if (empty) return kExitSource;
-  return exitCode(end, pipeline.outputFailed() || !closed || (opt.videoPath && !out.videoOk));
+               code != kExitOk, reporter);
+  return code;
 }
 
 }  // namespace cuetrack::app

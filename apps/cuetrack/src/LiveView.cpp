@@ -20,7 +20,6 @@
 #include "Overlay.hpp"
 #include "Picker.hpp"
 #include "PickerCv.hpp"
-#include "cuetrack_proto.h"
 
 namespace cuetrack::app {
 namespace {
@@ -50,7 +49,9 @@ struct LiveView::Impl {
   Box reselect{};
   // A --select asked of the window thread (highgui belongs to one thread per process).
   cv::Mat pickImage;
-  bool pickRequested = false, pickFinished = false, pickOk = false;
+  bool pickRequested = false, pickFinished = false;
+  PickResult pickOutcome = PickResult::Cancelled;
+  bool (*stop)() = nullptr;  // the signal flag: a picker open in the window polls it
   Box pickResult{};
   char pickError[160] = "";
   std::condition_variable pickDone;
@@ -94,8 +95,8 @@ struct LiveView::Impl {
     lastAt = f.pushedAt;
     char line1[256], line2[160];
     std::snprintf(line1, sizeof line1,
-                  "frame %u  %s  confidence %.2f  %.1f fps  display dropped %llu",
-                  f.track.frameIndex, ctp_state_name(f.track.state), f.track.confidence, fps,
+                  "frame %u  %s  confidence %.2f  %.1f fps  window dropped %llu",
+                  f.track.frameIndex, trackLook(f.track).word, f.track.confidence, fps,
                   static_cast<unsigned long long>(mailbox.dropped()));
     std::snprintf(line2, sizeof line2, "%sspace pause  r re-select  q quit%s",
                   isPaused() ? "PAUSED  " : "",
@@ -113,10 +114,10 @@ struct LiveView::Impl {
     }
     Box box{};
     char e[160] = "";
-    const bool ok = pickOn(image, &box, e, sizeof e);
+    const PickResult outcome = pickOn(image, stop, &box, e, sizeof e);
     {
       std::lock_guard<std::mutex> lock(mutex);
-      pickOk = ok;
+      pickOutcome = outcome;
       pickResult = box;
       std::snprintf(pickError, sizeof pickError, "%s", e);
       pickFinished = true;
@@ -148,8 +149,8 @@ struct LiveView::Impl {
         cv::imshow(kWindow, render(last));
       } else if (key == 'r' && haveFrame) {
         setPaused(true);
-        const cv::Rect r = selectRoi(kWindow, lastBgr);
-        if (r.width > 0 && r.height > 0) {
+        cv::Rect r;
+        if (selectRoi(kWindow, lastBgr, stop, &r) == PickResult::Picked) {
           std::lock_guard<std::mutex> lock(mutex);
           reselect = Box{static_cast<float>(r.x), static_cast<float>(r.y),
                          static_cast<float>(r.width), static_cast<float>(r.height)};
@@ -172,8 +173,9 @@ LiveView::~LiveView() {
   close();
 }
 
-bool LiveView::start(char* err, size_t errLen) {
+bool LiveView::start(bool (*stop)(), char* err, size_t errLen) {
   if (!displayAvailable(err, errLen)) return false;
+  _impl->stop = stop;
   _impl->thread = std::thread([this] { _impl->run(); });
   return true;
 }
@@ -207,8 +209,8 @@ void LiveView::waitWhilePaused(bool (*stop)()) {
   }
 }
 
-bool LiveView::pick(const Frame& frame, Box* out, char* err, size_t errLen) {
-  if (!_impl->thread.joinable()) return pickBox(frame, out, err, errLen);
+PickResult LiveView::pick(const Frame& frame, bool (*stop)(), Box* out, char* err, size_t errLen) {
+  if (!_impl->thread.joinable()) return pickBox(frame, stop, out, err, errLen);
   std::unique_lock<std::mutex> lock(_impl->mutex);
   _impl->pickImage = toBgr(frame.rgb);
   _impl->pickFinished = false;
@@ -216,11 +218,11 @@ bool LiveView::pick(const Frame& frame, Box* out, char* err, size_t errLen) {
   _impl->pickDone.wait(lock, [&] { return _impl->pickFinished || _impl->quit.load(); });
   if (!_impl->pickFinished) {
     std::snprintf(err, errLen, "--select: the window was closed");
-    return false;
+    return PickResult::Cancelled;
   }
-  if (!_impl->pickOk) std::snprintf(err, errLen, "%s", _impl->pickError);
+  if (_impl->pickOutcome != PickResult::Picked) std::snprintf(err, errLen, "%s", _impl->pickError);
   *out = _impl->pickResult;
-  return _impl->pickOk;
+  return _impl->pickOutcome;
 }
 
 bool LiveView::takeReselect(Box* box) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "Picker.hpp"
 #include "ViewTrack.hpp"
 #include "cuetrack/core/Frame.hpp"
 #include "cuetrack/core/Geometry.hpp"
@@ -19,10 +20,11 @@ class LiveView {
   LiveView(const LiveView&) = delete;
   LiveView& operator=(const LiveView&) = delete;
 
-  bool start(char* err, size_t errLen);  // opens the window thread
+  // Opens the window thread; stop() (the signal flag) also ends a re-select (r) open in it.
+  bool start(bool (*stop)(), char* err, size_t errLen);
   // pickBox() on the window's thread: with --show, every highgui call must come from the
-  // one thread (Qt's GUI thread is the first that used it).
-  bool pick(const Frame& frame, Box* out, char* err, size_t errLen);
+  // one thread (Qt's GUI thread is the first that used it). stop() ends it (Interrupted).
+  PickResult pick(const Frame& frame, bool (*stop)(), Box* out, char* err, size_t errLen);
   void push(const Frame& frame, const ViewTrack& track);
   // Space paused the run: blocks until resumed, quit, or stop() returns true.
   void waitWhilePaused(bool (*stop)());

@@ -20,7 +20,8 @@ const char* kFooter =
     "  of USB (docs/kinect.md); SCENE: one of cuetrack-synth --list (docs/recordings.md);\n"
     "  PATH: a fakenect recording folder (host builds with OpenCV also read RGB-D folders,\n"
     "  OTB folders, .avi, and pan:/still: stills; docs/recordings.md).\n"
-    "target (default: the ground truth where the target first shows, else wait for START).\n"
+    "target (default: the ground truth where the target first shows, else wait for START;\n"
+    "  no ground truth, no --box, --select or link for a START: exit 2, nothing to track).\n"
     "--show and --select need a display and a host build with OpenCV; in the window, space\n"
     "  pauses, r re-selects the target, q or Esc quits.\n"
     "stdout gets one line per frame when neither --serial nor --out is given, and stdout\n"
@@ -34,12 +35,12 @@ const char* kFooter =
     "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM/SIGHUP, STOP command),\n"
     "  1 source failed (cannot open, a read failed, a damaged frame, no decodable frame\n"
     "  at all, or a frame's size differs from the frame the track began on), 2 bad\n"
-    "  command line (an option given twice too; --show or --select without a display, a\n"
-    "  --select cancelled; an output (--out, --video, --snapshot) that is the source, lies\n"
-    "  inside its folder, or is another output), 3 output failed (cannot open, a write\n"
-    "  to --out/stdout/--video/--snapshot failed, or --video does not read back whole;\n"
-    "  tracking went on), 4 the --box, or the source's ground-truth box, refused by the\n"
-    "  tracker";
+    "  command line (an option given twice too; no way to a target; --show or --select\n"
+    "  without a display, a --select cancelled; an output (--out, --video, --snapshot)\n"
+    "  that is the source, lies inside its folder, or is another output), 3 output failed\n"
+    "  (cannot open, a write to --out/stdout/--video/--snapshot failed, or --video does not\n"
+    "  read back whole; tracking went on), 4 the --box, or the source's ground-truth box,\n"
+    "  refused by the tracker";
 
 // An id 1..255 (--mavlink-sysid, --mavlink-compid).
 cli::Convert mavlinkId(int* out) {

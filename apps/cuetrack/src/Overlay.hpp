@@ -11,7 +11,18 @@ namespace cuetrack::app {
 
 inline constexpr int kStripPx = 44;  // status text under the image
 
-// bgr: the frame; depth16: its depth [mm] at the same size, or empty for none.
+// How a track is drawn: each state in its own colour and word, so an occluded or lost
+// target never looks tracked. While lost no box is drawn: the box a lost frame carries is
+// where the target was last confirmed, not where it is.
+struct TrackLook {
+  const char* word;   // "tracking", "occluded", "lost", "searching", "idle"
+  cv::Scalar colour;  // BGR, of the box, the word and the first text line
+  bool drawBox;
+};
+TrackLook trackLook(const ViewTrack& track);
+
+// bgr: the frame; depth16: its depth [mm] at the same size, or empty for none. The word of
+// an occluded or lost track is also written on the image (at the box, or its corner).
 cv::Mat overlay(const cv::Mat& bgr, const cv::Mat& depth16, const ViewTrack& track,
                 const char* line1, const char* line2);
 

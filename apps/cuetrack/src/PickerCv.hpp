@@ -6,6 +6,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/highgui.hpp>
 
+#include "Picker.hpp"
 #include "cuetrack/core/Geometry.hpp"
 
 namespace cuetrack::app {
@@ -13,10 +14,12 @@ namespace cuetrack::app {
 // No toolbar (Qt's zoom buttons): the image starts at the window's corner, 1:1.
 inline constexpr int kWindowFlags = cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL;
 
-// cv::selectROI in window, with its instructions sent to stderr (stdout carries tracks).
-cv::Rect selectRoi(const char* window, const cv::Mat& image);
+// A mouse drag in window (already created) on image: our own loop rather than
+// cv::selectROI, whose loop cannot be left but by a key. Polls stop() every 20 ms.
+// Picked: *out is the box dragged, inside the image.
+PickResult selectRoi(const char* window, const cv::Mat& image, bool (*stop)(), cv::Rect* out);
 
-// A window of its own on bgr, the drag, the box. False + one line in err on cancel.
-bool pickOn(const cv::Mat& bgr, Box* out, char* err, size_t errLen);
+// A window of its own on bgr, the drag, the box; err says why there is none.
+PickResult pickOn(const cv::Mat& bgr, bool (*stop)(), Box* out, char* err, size_t errLen);
 
 }  // namespace cuetrack::app

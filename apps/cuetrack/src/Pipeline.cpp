@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "BoxFit.hpp"
 #include "StartBox.hpp"
 #include "TargetCheck.hpp"
 #include "cuetrack/core/FastMath.hpp"
@@ -87,13 +88,15 @@ bool Pipeline::startFromCommand(const Frame& frame, Box* initBox) {
   const Box box = startBoxPx(_start, frame);
   if (_tracker.init(frame, box, &why) == 0) {
     *initBox = box;
+    if (_start.kind == platform::StartRequest::Kind::BoxPx) warnIfCorners(frame, box, "START");
     warnIfPoorTarget(frame, box, "START");
     if (_link) _link->answerStart(_start.token, platform::StartOutcome::Started);
     return true;
   }
-  char line[160];
-  std::snprintf(line, sizeof line, "%s START %g,%g,%g,%g refused: %s", _options.linkName, box.x,
-                box.y, box.w, box.h, why);
+  char line[200];
+  std::snprintf(line, sizeof line, "%s START %g,%g,%g,%g refused: %s (the image is %dx%d)",
+                _options.linkName, box.x, box.y, box.w, box.h, why, frame.rgb.width,
+                frame.rgb.height);
   _reporter.report(line);
   _tracker.reset();
   _targetActive = false;
@@ -117,18 +120,23 @@ bool Pipeline::startFromOptions(const Frame& frame, Box* initBox, bool* rejected
   const char* why = "";
   if (_tracker.init(frame, box, &why) == 0) {
     *initBox = box;
-    if (_options.hasBox) warnIfPoorTarget(frame, box, "--box");
+    if (_options.hasBox) {
+      warnIfCorners(frame, box, "--box");
+      warnIfPoorTarget(frame, box, "--box");
+    }
     return true;
   }
   // Either ends the run: without it nothing would be tracked, ever.
   char line[512];
   if (_options.hasBox) {
-    std::snprintf(line, sizeof line, "--box %g,%g,%g,%g refused by the tracker: %s", box.x, box.y,
-                  box.w, box.h, why);
+    std::snprintf(line, sizeof line,
+                  "--box %g,%g,%g,%g refused by the tracker: %s (the image is %dx%d)", box.x, box.y,
+                  box.w, box.h, why, frame.rgb.width, frame.rgb.height);
   } else {
-    std::snprintf(line, sizeof line, "%s: frame %d: box %g,%g,%g,%g refused by the tracker: %s",
+    std::snprintf(line, sizeof line,
+                  "%s: frame %d: box %g,%g,%g,%g refused by the tracker: %s (the image is %dx%d)",
                   _options.groundTruthName ? _options.groundTruthName : "ground truth", _slot.index,
-                  box.x, box.y, box.w, box.h, why);
+                  box.x, box.y, box.w, box.h, why, frame.rgb.width, frame.rgb.height);
   }
   _reporter.report(line);
   *rejected = true;
@@ -146,6 +154,19 @@ void Pipeline::warnIfPoorTarget(const Frame& frame, const Box& box, const char* 
                 "%s %g,%g,%g,%g: poor target: %s (the track may follow nothing; --select or "
                 "--snapshot FILE.png to pick another)",
                 origin, box.x, box.y, box.w, box.h, issues);
+  _reporter.report(line);
+}
+
+void Pipeline::warnIfCorners(const Frame& frame, const Box& box, const char* origin) {
+  Box xywh{};
+  if (!_options.warnPoorTarget || !looksLikeCorners(box, frame.rgb.width, frame.rgb.height, &xywh))
+    return;
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "%s %g,%g,%g,%g runs past the %dx%d image as X,Y,W,H; if %g,%g is the bottom-right "
+                "corner, the box is %g,%g,%g,%g (X,Y,W,H)",
+                origin, box.x, box.y, box.w, box.h, frame.rgb.width, frame.rgb.height, box.w, box.h,
+                xywh.x, xywh.y, xywh.w, xywh.h);
   _reporter.report(line);
 }
 
@@ -206,9 +227,10 @@ StepResult Pipeline::step() {
     result = _tracker.update(frame);
   }
   const uint64_t procUs = _clock.nowUs() - t0;
-  const ctp_track_t msg = platform::toTrackMessage(
+  ctp_track_t msg = platform::toTrackMessage(
       result, frame.timeUs, static_cast<uint32_t>(procUs > 0xFFFFFFFFu ? 0xFFFFFFFFu : procUs),
       _state);
+  _confirmed.apply(msg);  // lost: the last confirmed box, never the search's
   _state = msg.state;
   _lastTrack = msg;
   ++_frames;

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "ConfirmedBox.hpp"
 #include "TrackerPort.hpp"
 #include "cuetrack/drivers/FrameSource.hpp"
 #include "cuetrack/platform/Reporter.hpp"
@@ -28,7 +29,8 @@ struct PipelineOptions {
   // The link as the status line names it: "serial" (--serial), "udp" (--mavlink-udp).
   const char* linkName = "serial";
   // Warn in one line when a box the user gave (--box, a START) is a poor target
-  // (TargetCheck.hpp); ground-truth boxes are taken as they are.
+  // (TargetCheck.hpp) or reads as corners (BoxFit.hpp); ground-truth boxes are taken as
+  // they are.
   bool warnPoorTarget = false;
 };
 
@@ -70,7 +72,8 @@ class Pipeline final : public platform::LinkControl {
 
   uint32_t frames() const { return _frames; }
   uint8_t state() const { return _state; }
-  // The last frame's track as sent out (seq 0), for the window and the run summary.
+  // The last frame's track as sent out (seq 0), for the window and the run summary; while
+  // lost its box is the last confirmed one (ConfirmedBox.hpp).
   const ctp_track_t& lastTrack() const { return _lastTrack; }
   bool outputFailed() const { return _outputFailed; }
 
@@ -88,6 +91,8 @@ class Pipeline final : public platform::LinkControl {
   void emit(const ctp_track_t& msg, const Frame& frame);
   void statusLine();
   void warnIfPoorTarget(const Frame& frame, const Box& box, const char* origin);
+  // A box that reads as X0,Y0,X1,Y1 corners (BoxFit.hpp): one line with its X,Y,W,H.
+  void warnIfCorners(const Frame& frame, const Box& box, const char* origin);
 
   FrameSource& _source;
   FrameSlot& _slot;
@@ -110,6 +115,7 @@ class Pipeline final : public platform::LinkControl {
   platform::StartRequest _start{};
   bool _stopRequested{false};
   uint8_t _state{CTP_STATE_IDLE};
+  ConfirmedBox _confirmed;  // what a lost frame reports as its box
   uint32_t _frames{0};
   ctp_track_t _lastTrack{};
 

@@ -10,20 +10,23 @@ namespace cuetrack::app {
 namespace {
 
 // Where the target comes from, for the banner.
-void describeTarget(const AppOptions& opt, const char* groundTruthName, char* out, size_t n) {
-  const bool live = opt.source && std::strncmp(opt.source, "kinect", 6) == 0;
+void describeTarget(const AppOptions& opt, const char* groundTruthName, bool groundTruth, char* out,
+                    size_t n) {
   const char* orStart = opt.serialPath || opt.mavlinkUdp ? ", or a START on the link" : "";
   if (opt.select) {
     std::snprintf(out, n, "the box dragged with --select");
   } else if (opt.hasBox) {
     std::snprintf(out, n, "--box %g,%g,%g,%g", opt.box.x, opt.box.y, opt.box.w, opt.box.h);
-  } else if (opt.useGroundTruth && !live) {
+  } else if (opt.useGroundTruth && groundTruth) {
     std::snprintf(out, n, "ground truth (%.400s) where the target first shows%s", groundTruthName,
                   orStart);
-  } else if (opt.serialPath || opt.mavlinkUdp) {
-    std::snprintf(out, n, "waiting for a START on the link (or give --box / --select)");
-  } else {
-    std::snprintf(out, n, "none: nothing will be tracked (give --box X,Y,W,H or --select)");
+  } else {  // App.cpp refused a run with no way to a target at all
+    const size_t len = std::strlen(groundTruthName);
+    const bool missingFile =
+        opt.useGroundTruth && len > 4 && std::strcmp(groundTruthName + len - 4, ".txt") == 0;
+    std::snprintf(out, n, "waiting for a START on the link (%s%.400s%sor give --box / --select)",
+                  missingFile ? "no ground truth: " : "", missingFile ? groundTruthName : "",
+                  missingFile ? " not found; " : "");
   }
 }
 
@@ -41,11 +44,11 @@ const char* linkName(const AppOptions& opt) {
   return opt.mavlinkUdp ? "udp" : "serial";
 }
 
-void printBanner(const AppOptions& opt, const char* groundTruthName, bool stdoutIsTerminal,
-                 platform::Reporter& reporter) {
+void printBanner(const AppOptions& opt, const char* groundTruthName, bool groundTruth,
+                 bool stdoutIsTerminal, platform::Reporter& reporter) {
   char sourceWhy[256], target[512], banner[1200];
   describeSourceChoice(opt.source, sourceWhy, sizeof sourceWhy);
-  describeTarget(opt, groundTruthName, target, sizeof target);
+  describeTarget(opt, groundTruthName, groundTruth, target, sizeof target);
   std::snprintf(
       banner, sizeof banner, "source %s | target: %s | config %s, seed %llu | output: %s%s",
       sourceWhy, target, opt.preset, static_cast<unsigned long long>(opt.seed),
@@ -61,7 +64,7 @@ void printBanner(const AppOptions& opt, const char* groundTruthName, bool stdout
 void printSummary(const AppOptions& opt, const char* program, const Pipeline& pipeline,
                   const FrameSource& source, const platform::TrackLink* link,
                   const RunSummary& summary, const RunEnd& end, uint64_t windowDroppedFrames,
-                  platform::Reporter& reporter) {
+                  bool failed, platform::Reporter& reporter) {
   char err[512] = "";
   const char* name = linkName(opt);
   const StepResult r = end.result;
@@ -94,6 +97,10 @@ void printSummary(const AppOptions& opt, const char* program, const Pipeline& pi
     n += std::snprintf(err + n, sizeof err - static_cast<size_t>(n), "; ");
     if (static_cast<size_t>(n) < sizeof err)
       formatLinkStats(name, link->stats(), err + n, sizeof err - static_cast<size_t>(n));
+  }
+  if (failed) {  // the error line said why; this says how far it got, if anywhere
+    if (pipeline.frames() > 0) reporter.report(err);
+    return;
   }
   reporter.report(err);
   summary.format(end.runUs, err, sizeof err);

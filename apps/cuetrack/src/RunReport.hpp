@@ -24,15 +24,18 @@ struct RunEnd {
 // The link as the status and closing lines name it.
 const char* linkName(const AppOptions& opt);
 
-// One line at start. stdoutIsTerminal: tracks go to stdout only with --stdout.
-void printBanner(const AppOptions& opt, const char* groundTruthName, bool stdoutIsTerminal,
-                 platform::Reporter& reporter);
+// One line at start. groundTruth: the source's first frame has ground truth (the banner
+// names its file only then). stdoutIsTerminal: tracks go to stdout only with --stdout.
+void printBanner(const AppOptions& opt, const char* groundTruthName, bool groundTruth,
+                 bool stdoutIsTerminal, platform::Reporter& reporter);
 
 // The closing lines; with --quiet only what would otherwise be lost without a word
-// (skipped frames, dropped or refused messages). link may be null.
+// (skipped frames, dropped or refused messages). link may be null. A failed run (failed:
+// its exit code is not 0; its error is said already) gets no summary and no next: line,
+// only how far it got when it tracked anything.
 void printSummary(const AppOptions& opt, const char* program, const Pipeline& pipeline,
                   const FrameSource& source, const platform::TrackLink* link,
                   const RunSummary& summary, const RunEnd& end, uint64_t windowDroppedFrames,
-                  platform::Reporter& reporter);
+                  bool failed, platform::Reporter& reporter);
 
 }  // namespace cuetrack::app

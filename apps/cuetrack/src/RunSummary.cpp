@@ -40,8 +40,8 @@ void RunSummary::format(uint64_t wallUs, char* out, size_t outLen) const {
   }
   if (_gtFrames && room()) {
     n += std::snprintf(out + n, outLen - static_cast<size_t>(n),
-                       ", ground-truth mean overlap %.2f over %u frames (lost = 0)", meanOverlap(),
-                       _gtFrames);
+                       ", ground-truth mean overlap %.2f over %u frames (a lost frame scores 0)",
+                       meanOverlap(), _gtFrames);
   }
   if (_frames && _idle == _frames && room()) {
     std::snprintf(out + n, outLen - static_cast<size_t>(n), "; no target was ever given");

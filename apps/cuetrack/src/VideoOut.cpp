@@ -9,7 +9,6 @@
 
 #include "CvImage.hpp"
 #include "Overlay.hpp"
-#include "cuetrack_proto.h"
 
 namespace cuetrack::app {
 
@@ -76,7 +75,7 @@ bool VideoOut::write(const Frame& frame, const ViewTrack& track, char* err, size
   if (!v.depth) depth = cv::Mat();
   char line1[160];
   std::snprintf(line1, sizeof line1, "frame %u  %s  confidence %.2f", track.frameIndex,
-                ctp_state_name(track.state), track.confidence);
+                trackLook(track).word, track.confidence);
   v.writer.write(
       overlay(bgr, depth, track, line1,
               v.depth ? "cuetrack   depth: near blue, far red, none black" : "cuetrack"));

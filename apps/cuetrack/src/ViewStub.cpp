@@ -22,8 +22,9 @@ bool viewBuilt() {
 bool displayAvailable(char* err, size_t errLen) {
   return fail(err, errLen);
 }
-bool pickBox(const Frame&, Box*, char* err, size_t errLen) {
-  return fail(err, errLen);
+PickResult pickBox(const Frame&, bool (*)(), Box*, char* err, size_t errLen) {
+  fail(err, errLen);
+  return PickResult::Cancelled;
 }
 bool writeSnapshot(const Frame&, const char*, char* err, size_t errLen) {
   return fail(err, errLen);
@@ -43,11 +44,12 @@ bool VideoOut::close(char*, size_t) {
 
 LiveView::LiveView() = default;
 LiveView::~LiveView() = default;
-bool LiveView::start(char* err, size_t errLen) {
+bool LiveView::start(bool (*)(), char* err, size_t errLen) {
   return fail(err, errLen);
 }
-bool LiveView::pick(const Frame&, Box*, char* err, size_t errLen) {
-  return fail(err, errLen);
+PickResult LiveView::pick(const Frame&, bool (*)(), Box*, char* err, size_t errLen) {
+  fail(err, errLen);
+  return PickResult::Cancelled;
 }
 void LiveView::push(const Frame&, const ViewTrack&) {}
 void LiveView::waitWhilePaused(bool (*)()) {}

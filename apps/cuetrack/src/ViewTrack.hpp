@@ -10,6 +10,7 @@ namespace cuetrack::app {
 struct ViewTrack {
   uint32_t frameIndex = 0;
   uint8_t state = 0;  // CTP_STATE_*
+  uint8_t flags = 0;  // CTP_FLAG_* (occluded is drawn as such)
   Box box{};          // [px]
   float confidence = 0.f;
 };
