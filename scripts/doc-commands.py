@@ -8,7 +8,8 @@ usage: scripts/doc-commands.py [--bin DIR] [--timeout SECONDS] [--list] [DOC...]
 A command block is an indented (4 spaces) or fenced (```, ```sh, ```bash) block. Each
 doc's blocks run in order in one bash, as a reader pastes them into one shell, from a
 fresh folder laid out like the clone's (build/, scripts/ and CMakePresets.json linked
-to the clone's, ../shared to the clone's ../shared) with DIR on PATH. A command that
+to the clone's, ../shared to the clone's ../shared) with DIR on PATH and HOME a fresh
+folder too (what a command installs in ~ goes there). A command that
 fails ends its block; the next block still runs. A block whose lines all read
 `PROGRAM: ...` is shown output, not run. An identical block or simple command already run
 (README.md and docs/first-hour.md share some) is not run twice.
@@ -333,7 +334,9 @@ def main():
                 for k, x in enumerate(block):
                     if x in gui:
                         block[k] = (x[0], x[1], "skip", "needs a display: Xvfb did not start")
-    env = dict(os.environ, PATH=bindir + os.pathsep + os.environ.get("PATH", ""))
+    os.mkdir(os.path.join(tmp, "home"))
+    env = dict(os.environ, PATH=bindir + os.pathsep + os.environ.get("PATH", ""),
+               HOME=os.path.join(tmp, "home"))
     env.pop("DISPLAY", None)
     if display:
         env["DISPLAY"] = display
