@@ -286,7 +286,8 @@ def run_doc(plan, clone, tmp, tag, env, timeout):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("docs", nargs="*", metavar="DOC")
     ap.add_argument("--bin", default=os.path.join(ROOT, "build/host/bin"))
     ap.add_argument("--timeout", type=float, default=240, help="seconds for one doc")
