@@ -7,12 +7,12 @@ usage: scripts/doc-commands.py [--bin DIR] [--timeout SECONDS] [--list] [DOC...]
 
 A command block is an indented (4 spaces) or fenced (```, ```sh, ```bash) block. Each
 doc's blocks run in order in one bash, as a reader pastes them into one shell, from a
-fresh folder laid out like the clone's (build/, scripts/ and CMakePresets.json linked
-to the clone's, ../shared to the clone's ../shared) with DIR on PATH and HOME a fresh
-folder too (what a command installs in ~ goes there). A command that
-fails ends its block; the next block still runs. A block whose lines all read
-`PROGRAM: ...` is shown output, not run. An identical block or simple command already run
-(README.md and docs/first-hour.md share some) is not run twice.
+fresh folder laid out like the clone's (build/, scripts/ and CMakePresets.json linked to
+the clone's; ../shared to the clone's ../shared, or to $CUETRACK_SHARED_DIR as for the
+tests), with DIR on PATH and HOME a fresh folder too (what a command installs in ~ goes
+there). A command that fails ends its block; the next block still runs. A block whose
+lines all read `PROGRAM: ...` is shown output, not run. An identical block or simple
+command already run (README.md and docs/first-hour.md share some) is not run twice.
 
 Commands that need hardware, a network, a cross build, a person at the keyboard, or
 minutes are skipped by the rules of SKIP below, each printed with its reason; a new
@@ -171,7 +171,8 @@ def make_clone_like(tmp):
     for name in ("build", "scripts", "CMakePresets.json"):
         if os.path.exists(os.path.join(ROOT, name)):
             os.symlink(os.path.join(ROOT, name), os.path.join(clone, name))
-    shared = os.path.join(os.path.dirname(ROOT), "shared")
+    shared = os.environ.get("CUETRACK_SHARED_DIR") or os.path.join(os.path.dirname(ROOT),
+                                                                    "shared")
     if os.path.isdir(shared):
         os.symlink(shared, os.path.join(tmp, "shared"))
     return clone
