@@ -88,8 +88,10 @@ read -r hidden_first hidden_last < <(awk '{ sub(/\r$/, "") }  # CRLF lines
   "$tmp/occlusion/groundtruth.txt")
 [ -n "${hidden_last:-}" ] || die "synth:occlusion's ground truth hides no frame"
 
-# 3. A virtual display on a free number (-displayfd prints it once clients may connect).
-Xvfb -displayfd 1 -screen 0 1280x800x24 -nolisten tcp >"$tmp/display" 2>"$tmp/xvfb.err" &
+# 3. A virtual display on a free number (-displayfd prints it once clients may connect;
+# -noreset: a reset when the last client leaves, cuetrack's display probe, would refuse
+# the window for a moment).
+Xvfb -displayfd 1 -screen 0 1280x800x24 -nolisten tcp -noreset >"$tmp/display" 2>"$tmp/xvfb.err" &
 xvfb_pid=$!
 display_ready() { grep -q '^[0-9]*$' "$tmp/display" && [ "$(wc -l <"$tmp/display")" -ge 1 ]; }
 wait_until 30 display_ready || die "Xvfb did not start: $(tail -n 1 "$tmp/xvfb.err")"

@@ -46,11 +46,19 @@ want_files=(usr/bin/cuetrack usr/bin/cuetrack-listen usr/lib/systemd/system/cuet
             usr/share/cuetrack/protocol/cuetrack_proto.c
             usr/share/cuetrack/protocol/example/fc_link.h
             usr/share/cuetrack/protocol/example/fc_link.c usr/share/doc/cuetrack/copyright
-            usr/share/doc/cuetrack/serial-protocol.md usr/share/doc/cuetrack/mavlink.md
+            usr/share/doc/cuetrack/README.md usr/share/doc/cuetrack/docs/first-hour.md
+            usr/share/doc/cuetrack/docs/serial-protocol.md usr/share/doc/cuetrack/docs/mavlink.md
             usr/lib/udev/rules.d/52-cuetrack-serial.rules)
 [ "$freenect" = ON ] && want_files+=(usr/bin/cuetrack-record usr/lib/udev/rules.d/51-cuetrack-kinect.rules)
 for f in "${want_files[@]}"; do
   [ -e "$r/$f" ] || fail "package lacks /$f"
+done
+# Every doc a packaged program names (its --help, its closing "next:" line) is packaged
+# where that name finds it: under /usr/share/doc/cuetrack, as in the clone.
+named=$(grep -ahoE 'docs/[A-Za-z0-9_-]+\.md' "$r"/usr/bin/* | sort -u)
+[ -n "$named" ] || fail "no packaged program names a doc (docs/NAME.md): the check is blind"
+for d in $named; do
+  [ -e "$r/usr/share/doc/cuetrack/$d" ] || fail "a packaged program names $d, not packaged"
 done
 # The unit starts the installed path; no build-tree path leaked into any text file.
 grep -q '^ExecStart=/usr/bin/cuetrack ' "$r/usr/lib/systemd/system/cuetrack.service" ||

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "DocPath.hpp"
 #include "Sources.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 
@@ -112,8 +113,8 @@ void printSummary(const AppOptions& opt, const char* program, const Pipeline& pi
   reporter.report(err);
   std::snprintf(err, sizeof err,
                 "next: %s --show --realtime (watch it) | %s --select (pick your own target) | "
-                "docs/first-hour.md",
-                program, program);
+                "%s",
+                program, program, findDoc("docs/first-hour.md").c_str());
   reporter.report(err);
 }
 
