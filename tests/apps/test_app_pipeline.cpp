@@ -28,6 +28,7 @@ using namespace cuetrack::platform;
 namespace {
 
 // 64x48 grey frames, 30 fps timestamps, optional ground truth in every frame.
+constexpr int kTinyW = 64, kTinyH = 48;
 class TinySource final : public FrameSource {
  public:
   TinySource(int frames, bool withTruth) : _frames(frames), _withTruth(withTruth) {}
@@ -46,7 +47,7 @@ class TinySource final : public FrameSource {
     if (_index >= _resizeFrom)
       out.rgb.resize(_resizeW, _resizeH);
     else
-      out.rgb.resize(64, 48);
+      out.rgb.resize(kTinyW, kTinyH);
     out.hasDepth = false;
     out.timeUs = static_cast<uint64_t>(_index) * 33333u + (_index >= _gapFrom ? _gapUs : 0u);
     out.index = _index;
@@ -1035,7 +1036,7 @@ TEST_CASE("while lost, every output carries the last confirmed box with the lost
     REQUIRE(formatTrackCsvRow(sink.at(4), line, sizeof line) > 0);
     CHECK(std::string(line).find(",searching,11,12,20,16,") != std::string::npos);
   }
-  // MAVLink: lost is ERROR with no box (NaN, MAVLink's "unknown"), and no LANDING_TARGET.
+  // MAVLink: lost is ERROR with the last confirmed box, and no LANDING_TARGET.
   {
     static FakeClock clock{1000};
     static MemoryReporter reporter;
@@ -1067,8 +1068,12 @@ TEST_CASE("while lost, every output carries the last confirmed box with the lost
     for (int i : {3, 4}) {
       INFO("frame " << i);
       CHECK(status[static_cast<size_t>(i)].trackingStatus == mavlink::kTrackingStatusError);
-      CHECK(std::isnan(status[static_cast<size_t>(i)].recTopX));
-      CHECK(std::isnan(status[static_cast<size_t>(i)].pointX));
+      // The last confirmed box (11,12,20,16), as on every other output.
+      const mavlink::CameraTrackingImageStatus& s = status[static_cast<size_t>(i)];
+      CHECK(s.recTopX == Approx(11.f / static_cast<float>(kTinyW)));
+      CHECK(s.recTopY == Approx(12.f / static_cast<float>(kTinyH)));
+      CHECK(s.recBottomX == Approx(31.f / static_cast<float>(kTinyW)));
+      CHECK(s.recBottomY == Approx(28.f / static_cast<float>(kTinyH)));
     }
     CHECK(status[5].trackingStatus == mavlink::kTrackingStatusActive);
     REQUIRE(!landingFrames.empty());  // sent while tracking in 3D...

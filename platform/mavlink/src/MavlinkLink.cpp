@@ -333,7 +333,10 @@ void MavlinkLink::sendFrame(const FrameReport& r) {
   if (located && _landingInterval.due(r.track.time_us)) sendLandingTarget(r);
 }
 
-// The box as fractions of the image: NaN while no target is located.
+// The box as fractions of the image. While lost (ERROR) it is the last confirmed box (the
+// pipeline puts it in the track, as for every output: issue 43), so that a consumer that
+// reads the box without the status steers at where the target was last seen, never at the
+// search's windows; NaN while idle or before any box.
 void MavlinkLink::sendStatus(const FrameReport& r) {
   CameraTrackingImageStatus s;
   s.targetData = kTrackingTargetDataInStatus;
@@ -343,22 +346,23 @@ void MavlinkLink::sendStatus(const FrameReport& r) {
   if (t.state == CTP_STATE_IDLE) {
     s.trackingStatus = kTrackingStatusIdle;
     s.trackingMode = kTrackingModeNone;
-  } else if (t.state != CTP_STATE_TRACKING) {
-    s.trackingStatus = kTrackingStatusError;  // lost: searching, no box to show
-    s.trackingMode = _trackingMode;
-  } else if (r.widthPx > 0 && r.heightPx > 0) {
-    s.trackingStatus = kTrackingStatusActive;
+  } else {
+    const bool tracking = t.state == CTP_STATE_TRACKING;
+    s.trackingStatus = tracking ? kTrackingStatusActive : kTrackingStatusError;
     // Started from ground truth or --box: reported as a rectangle.
     s.trackingMode = _trackingMode == kTrackingModeNone ? kTrackingModeRectangle : _trackingMode;
-    const float w = static_cast<float>(r.widthPx), h = static_cast<float>(r.heightPx);
-    s.recTopX = static_cast<float>(t.box_px[0]) / w;
-    s.recTopY = static_cast<float>(t.box_px[1]) / h;
-    s.recBottomX = static_cast<float>(t.box_px[0] + t.box_px[2]) / w;
-    s.recBottomY = static_cast<float>(t.box_px[1] + t.box_px[3]) / h;
-    s.pointX = 0.5f * (s.recTopX + s.recBottomX);
-    s.pointY = 0.5f * (s.recTopY + s.recBottomY);
-    const float sidePx = static_cast<float>(t.box_px[2] > t.box_px[3] ? t.box_px[2] : t.box_px[3]);
-    s.radius = 0.5f * sidePx / w;
+    if (r.widthPx > 0 && r.heightPx > 0 && t.box_px[2] > 0 && t.box_px[3] > 0) {
+      const float w = static_cast<float>(r.widthPx), h = static_cast<float>(r.heightPx);
+      s.recTopX = static_cast<float>(t.box_px[0]) / w;
+      s.recTopY = static_cast<float>(t.box_px[1]) / h;
+      s.recBottomX = static_cast<float>(t.box_px[0] + t.box_px[2]) / w;
+      s.recBottomY = static_cast<float>(t.box_px[1] + t.box_px[3]) / h;
+      s.pointX = 0.5f * (s.recTopX + s.recBottomX);
+      s.pointY = 0.5f * (s.recTopY + s.recBottomY);
+      const float sidePx =
+          static_cast<float>(t.box_px[2] > t.box_px[3] ? t.box_px[2] : t.box_px[3]);
+      s.radius = 0.5f * sidePx / w;
+    }
   }
   uint8_t p[40];
   transmit(kMsgCameraTrackingImageStatus, p, pack(s, p));
