@@ -84,8 +84,10 @@ class Xvfb {
     }
   }
   bool start(const char* xvfb) {
-    const char* argv[] = {xvfb,          "-displayfd", "1",   "-screen", "0",
-                          "1280x800x24", "-nolisten",  "tcp", nullptr};
+    // -noreset: a server that resets when its last client leaves (cuetrack's display
+    // probe) refused the window that followed now and then (scripts/docs-images.sh).
+    const char* argv[] = {xvfb,          "-displayfd", "1",   "-screen",  "0",
+                          "1280x800x24", "-nolisten",  "tcp", "-noreset", nullptr};
     if (!_server.start(argv, _log.c_str(), nullptr)) return false;
     // The display number, followed by a newline, once the server accepts clients.
     if (!waitFor([&] { return contains(slurp(_log), "\n") || !_server.running(); }, 30000))
