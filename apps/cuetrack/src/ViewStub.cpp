@@ -25,7 +25,7 @@ bool displayAvailable(char* err, size_t errLen) {
 bool pickBox(const Frame&, Box*, char* err, size_t errLen) {
   return fail(err, errLen);
 }
-bool writeSnapshot(const Frame&, const char*, char* err, size_t errLen) {
+bool writeSnapshot(const Frame&, const char*, char* err, size_t errLen, float, float) {
   return fail(err, errLen);
 }
 struct VideoOut::Impl {};
