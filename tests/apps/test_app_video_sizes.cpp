@@ -1,8 +1,9 @@
 // Any video, any size, end to end through the real cuetrack: a 1280x720 MJPG .avi with
 // --box and a 1920x1080 mp4v .mp4 with its OTB ground truth beside it (both written here
 // with cv::VideoWriter: a textured rectangle moving right), tracked with every box in the
-// CSV in the video's own pixels, overlapping the truth. And --source camera without a
-// camera: exit 1, one line naming the device.
+// CSV in the video's own pixels, overlapping the truth; --out over that ground truth is
+// refused (exit 2). And --source camera without a camera: exit 1, one line naming the
+// device.
 #include <catch2/catch.hpp>
 
 #include <signal.h>
@@ -94,6 +95,10 @@ TEST_CASE("a 1280x720 .avi and a 1920x1080 .mp4 track with boxes in their own pi
   }
   writeText(tmp / "fullhd.txt", otbGroundTruth(kFrames, 1920, 1080));  // the target from it
   requireTrackedInSourcePixels(mp4, 1920, 1080, {}, tmp);
+  // That ground truth is an input: --out over it is refused before anything opens.
+  const std::string gt = tmp / "fullhd.txt", err = tmp / "err";
+  REQUIRE(run({CUETRACK_APP_BIN, "--source", mp4.c_str(), "--out", gt.c_str()}, err) == 2);
+  CHECK(readText(err).find("is the same file as --source's ground truth") != std::string::npos);
 }
 
 TEST_CASE("--source camera without a camera: exit 1, one line naming the device") {

@@ -98,9 +98,10 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
     if (FrameSource* camera = openDefaultCamera(noKinect, seed, err, errLen)) return camera;
     if (gDefaultSpec[0] != '\0') return nullptr;  // a camera was there but failed: err says why
     std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
-                  "synth:%s, a generated scene (%s, no camera found; --source "
+                  "synth:%s, a generated scene (%s, %s; --source "
                   "kinect|camera|synth:SCENE|PATH to choose)",
-                  kDefaultScene, noKinect);
+                  kDefaultScene, noKinect,
+                  frameSourcesHaveOpenCv() ? "no camera found" : "no camera support in this build");
     return openSynth(kDefaultScene, seed, frames, err, errLen);
   }
   if (std::strcmp(spec, "kinect") == 0 || std::strncmp(spec, "kinect:", 7) == 0) {
