@@ -49,6 +49,7 @@ class TinySource final : public FrameSource {
     else
       out.rgb.resize(kTinyW, kTinyH);
     out.hasDepth = false;
+    out.scale = _scale;
     out.timeUs = static_cast<uint64_t>(_index) * 33333u + (_index >= _gapFrom ? _gapUs : 0u);
     out.index = _index;
     out.hasGroundTruth = _withTruth;
@@ -73,6 +74,8 @@ class TinySource final : public FrameSource {
     _onSlice = onSlice;
     _onSliceCtx = ctx;
   }
+  // Frames scaled down from a w x h source (twice 64x48: 128x96), as a large video's are.
+  void scaledFrom(int w, int h) { _scale = FrameScale{w, h, 64, 48}; }
   void visibleFrom(int i) { _visibleFrom = i; }  // ground truth empty before frame i
   void truthX(float x) { _truthX = x; }
   void resizeFrom(int i, int w, int h) {  // frames i... are w x h
@@ -95,6 +98,7 @@ class TinySource final : public FrameSource {
   int _visibleFrom = 0;
   float _truthX = 10.f;
   int _resizeFrom = 1 << 30, _resizeW = 0, _resizeH = 0;
+  FrameScale _scale{};
 };
 
 // Moves the box 1 px right per update; refuses boxes with x < 0.
@@ -106,7 +110,7 @@ class StubTracker final : public TrackerPort {
       *why = "BoxOutsideImage";
       return 2;
     }
-    _box = box;
+    _box = _init = box;
     ++inits;
     return 0;
   }
@@ -125,12 +129,13 @@ class StubTracker final : public TrackerPort {
     return r;
   }
   void reset() override { ++resets; }
+  Box lastInit() const { return _init; }
   int inits = 0, updates = 0, resets = 0;
   bool lost = false;
   bool with3d = false;
 
  private:
-  Box _box{};
+  Box _box{}, _init{};
 };
 
 // The host end of the cable: sends commands, decodes what the app sent.
@@ -281,6 +286,30 @@ TEST_CASE("a --box or START that reads as corners X0,Y0,X1,Y1 is named, with its
   rig.host.send(startCommand(4, 30, 5, 20, 20));  // inside: nothing said
   REQUIRE(rig.step() == StepResult::Continue);
   CHECK(rig.reporter.countContaining("runs past") == 2);
+}
+
+TEST_CASE("a scaled-down source: --box, START and every track out are in its own pixels") {
+  PipelineOptions o;
+  o.hasBox = true;
+  o.box = Box{40.f, 20.f, 16.f, 16.f};  // in the 128x96 source
+  static Rig rig(10, false, o);
+  rig.source.scaledFrom(128, 96);
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.tracker.lastInit().x == 20.f);  // the tracker sees the 64x48 frame
+  CHECK(rig.tracker.lastInit().w == 8.f);
+  CHECK(rig.sink.at(0).box_px[0] == 40);
+  CHECK(rig.sink.at(0).box_px[2] == 16);
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.sink.at(1).box_px[0] == 42);  // 1 px of the frame is 2 of the source
+  rig.host.send(startCommand(9, 60, 30, 20, 20));
+  REQUIRE(rig.step() == StepResult::Continue);
+  CHECK(rig.tracker.lastInit().x == 30.f);
+  CHECK(rig.tracker.lastInit().h == 10.f);
+  CHECK(rig.sink.at(2).box_px[0] == 60);
+  CHECK(rig.sink.at(2).box_px[3] == 20);
+  const auto msgs = rig.host.drain();
+  REQUIRE(countType(msgs, CTP_MSG_TRACK) == 3);
+  CHECK(msgs.back().u.track.box_px[0] == 60);
 }
 
 TEST_CASE("a poor target from START or --box is warned about in one line, and still tracked") {

@@ -1,6 +1,7 @@
 // What cuetrack shows, with the real binary: the banner and summary lines, --snapshot's
 // PNG, --show without a display, and under Xvfb the real window (a screenshot of it shows
-// the box the CSV says) and the picker (a synthetic mouse drag gives the box dragged).
+// the box the CSV says) and the picker (a synthetic mouse drag gives the box dragged, in a
+// 1280x720 video's own pixels though the picker shows it at 640x360).
 // Every wait polls an observable condition with a bound; no sleep synchronises.
 #include <catch2/catch.hpp>
 
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "MovingRectVideo.hpp"
 #include "Process.hpp"
 #include "Skip.hpp"
 #include "TempDir.hpp"
@@ -546,4 +548,39 @@ TEST_CASE("a target that leaves: the CSV holds the last confirmed box, the video
     }
   CHECK(green == 0);
   CHECK(redInCorner(frame) > 10);
+}
+
+TEST_CASE("under Xvfb: --select on a 1280x720 video picks a box in the video's pixels") {
+  const std::string xvfbPath = onPath("Xvfb"), xdotoolPath = onPath("xdotool");
+  const char *xvfb = xvfbPath.c_str(), *xdotool = xdotoolPath.c_str();
+  if (!*xvfb || !*xdotool) CUETRACK_SKIP("Xvfb or xdotool missing (scripts/setup.sh)");
+  TempDir tmp;
+  const std::string avi = tmp.file("hd.avi"), csv = tmp.file("t.csv"), err = tmp.file("err.txt");
+  REQUIRE(writeMovingRectVideo(avi, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 1280, 720, 3));
+  Xvfb x(tmp);
+  REQUIRE(x.start(xvfb));
+  const char* argv[] = {CUETRACK_APP_BIN, "--source",  avi.c_str(), "--select",
+                        "--out",          csv.c_str(), nullptr};
+  ChildProcess app;
+  REQUIRE(app.start(argv, nullptr, err.c_str()));
+  REQUIRE(xtool({xdotool, "search", "--sync", "--onlyvisible", "--name", "drag a box"}, tmp));
+  const std::string id = lines(slurp(tmp.file("xtool.out")))[0];
+  // The picker shows the frame as the tracker sees it, 640x360: a drag over 360,110 to
+  // 420,200 there is 720,220 to 840,400 in the video (the rectangle is at 704,216,213,180).
+  REQUIRE(xtool({xdotool, "windowfocus", "--sync", id.c_str()}, tmp));
+  REQUIRE(xtool(
+      {xdotool,    "mousemove", "--window", id.c_str(), "--sync", "360",     "110", "mousedown",
+       "1",        "mousemove", "--window", id.c_str(), "--sync", "390",     "150", "mousemove",
+       "--window", id.c_str(),  "--sync",   "420",      "200",    "mouseup", "1"},
+      tmp));
+  REQUIRE(xtool({xdotool, "key", "Return"}, tmp));
+  int status = -1;
+  REQUIRE(app.wait(kAppTimeoutMs, &status));
+  CHECK(status == 0);
+  const std::string e = slurp(err);
+  INFO(e);
+  CHECK(contains(e, "cuetrack: picked --box 720,220,120,180"));
+  const std::vector<std::string> rows = lines(slurp(csv));
+  REQUIRE(rows.size() >= 2);
+  CHECK(contains(rows[1], ",tracking,720,220,120,180,"));
 }

@@ -17,6 +17,7 @@
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
+#include "cuetrack/drivers/GroundTruthOut.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 
 using namespace cuetrack;
@@ -461,4 +462,30 @@ TEST_CASE("what libfreenect's fakenect cannot replay is named before it exits or
   CHECK_FALSE(checkFakenectReplayable((tmp / "small").c_str(), err, sizeof err));
   CHECK(std::string(err).find("fakenect replays only 640x480") != std::string::npos);
   CHECK(std::string(err).find('\n') == std::string::npos);
+}
+
+TEST_CASE("a writer's ground truth starts at frame 0, and a failed write is said at close") {
+  TempDir tmp;
+  static FrameSlot frame;  // ~1.5 MiB
+  frame.rgb.resize(64, 48);
+  frame.hasGroundTruth = true;
+  frame.groundTruth = Box{8, 6, 16, 12};
+  char err[256] = "";
+  GroundTruthOut late;
+  late.start(tmp.path(), "late");
+  frame.hasGroundTruth = false;
+  REQUIRE(late.write(frame, 0, err, sizeof err));  // no truth: nothing made
+  REQUIRE_FALSE(rec::exists((tmp / "groundtruth.txt").c_str()));
+  frame.hasGroundTruth = true;
+  REQUIRE_FALSE(late.write(frame, 1, err, sizeof err));
+  CHECK(std::string(err) == tmp.path() + ": ground truth starts at frame 1, not 0");
+  REQUIRE(late.close(err, sizeof err));  // nothing was open
+
+  GroundTruthOut full;  // groundtruth.txt is /dev/full: the data is lost at close
+  REQUIRE(::symlink("/dev/full", (tmp / "groundtruth.txt").c_str()) == 0);
+  full.start(tmp.path(), "full");
+  REQUIRE(full.write(frame, 0, err, sizeof err));
+  REQUIRE_FALSE(full.close(err, sizeof err));
+  CHECK(std::string(err) ==
+        tmp.path() + "/groundtruth.txt: write failed (No space left on device)");
 }

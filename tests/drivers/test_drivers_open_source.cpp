@@ -76,7 +76,20 @@ TEST_CASE("openFrameSource errors are one line naming the spec", "[open][bad]") 
     test::writeText(tmp / "v.avi", "x");
     CHECK_FALSE(openFrameSource((tmp / "v.avi").c_str(), SourceOptions{}, err, sizeof err));
     CHECK(std::string(err).find("needs a host build with OpenCV") != std::string::npos);
+    test::writeText(tmp / "v.mp4", "x");
+    CHECK_FALSE(openFrameSource((tmp / "v.mp4").c_str(), SourceOptions{}, err, sizeof err));
+    CHECK(std::string(err).find("a video needs a host build with OpenCV") != std::string::npos);
+    CHECK_FALSE(openFrameSource("camera", SourceOptions{}, err, sizeof err));
+    CHECK(std::string(err) ==
+          "camera: a V4L2 camera needs a host build with OpenCV (this build "
+          "has none)");
+    char device[64];
+    CHECK_FALSE(findDefaultCamera(device, sizeof device));
   }
+  // Any video by its extension, any case: not "unknown format" (it decodes or it is damaged).
+  test::writeText(tmp / "phone.MOV", "not a video");
+  CHECK_FALSE(openFrameSource((tmp / "phone.MOV").c_str(), SourceOptions{}, err, sizeof err));
+  CHECK(std::string(err).find("unknown format") == std::string::npos);
   // A panned still: decoded by OpenCV; its own errors name the image at fault.
   const std::string pan =
       "pan:" + tmp / "none.png" + "," + tmp / "none.png" + ",1,1,8,8,500,500,4,4";

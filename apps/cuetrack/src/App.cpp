@@ -214,15 +214,24 @@ int resolveStartBox(AppOptions& opt, FrameSource*& source, FrameSlot& slot, Live
     return kExitSource;
   }
   if (opt.snapshotPath) {
-    if (!writeSnapshot(slot.frame(), opt.snapshotPath, err, sizeof err)) {
+    if (!writeSnapshot(slot.frame(), opt.snapshotPath, err, sizeof err, slot.scale.xFactor(),
+                       slot.scale.yFactor())) {
       reporter.report(err);
       return kExitOutput;
     }
-    std::snprintf(err, sizeof err,
-                  "wrote %s: frame %d, %dx%d px, grid every %d px; read the target's box off it "
-                  "and run with --box X,Y,W,H",
-                  opt.snapshotPath, slot.index, slot.rgb.width(), slot.rgb.height(),
-                  kSnapshotGridPx);
+    if (slot.scale.scaled()) {
+      std::snprintf(err, sizeof err,
+                    "wrote %s: frame %d, scaled from %dx%d to %dx%d px, grid labelled in the "
+                    "source's px; read the target's box off it and run with --box X,Y,W,H",
+                    opt.snapshotPath, slot.index, slot.scale.sourceWidthPx,
+                    slot.scale.sourceHeightPx, slot.rgb.width(), slot.rgb.height());
+    } else {
+      std::snprintf(err, sizeof err,
+                    "wrote %s: frame %d, %dx%d px, grid every %d px; read the target's box off "
+                    "it and run with --box X,Y,W,H",
+                    opt.snapshotPath, slot.index, slot.rgb.width(), slot.rgb.height(),
+                    kSnapshotGridPx);
+    }
     reporter.report(err);
     return kExitOk;
   }
@@ -237,6 +246,7 @@ int resolveStartBox(AppOptions& opt, FrameSource*& source, FrameSlot& slot, Live
     reporter.report(err);
     return kExitUsage;
   }
+  opt.box = slot.scale.toSource(opt.box);  // picked on the frame as shown; --box is the source's
   opt.hasBox = true;
   std::snprintf(err, sizeof err, "picked --box %g,%g,%g,%g (give it to later runs)", opt.box.x,
                 opt.box.y, opt.box.w, opt.box.h);
@@ -291,6 +301,7 @@ PipelineOptions pipelineOptions(const AppOptions& opt, const FrameSource& source
   po.sourceName = opt.source ? opt.source : source.name();
   po.groundTruthName = groundTruthName;
   po.warnPoorTarget = true;
+  po.sayScaling = !opt.quiet;
   po.linkName = linkName(opt);
   return po;
 }
@@ -355,16 +366,19 @@ RunEnd runLoop(const AppOptions& opt, Pipeline& pipeline, const FrameSlot& slot,
   while (r == StepResult::Continue && !platform::stopRequested()) {
     const uint32_t before = pipeline.frames();
     r = pipeline.step();
-    if (pipeline.frames() == before) continue;  // no frame this step
-    const ctp_track_t& t = pipeline.lastTrack();
-    summary.add(t, slot.hasGroundTruth ? &slot.groundTruth : nullptr);
+    if (pipeline.frames() == before) continue;    // no frame this step
+    const ctp_track_t& t = pipeline.lastTrack();  // in the source's pixels, as sent out
+    const Box truth = slot.scale.toSource(slot.groundTruth);
+    summary.add(t, slot.hasGroundTruth ? &truth : nullptr);
     if (!opt.show && !out.videoOk) continue;
     ViewTrack vt;
     vt.frameIndex = static_cast<uint32_t>(slot.index);
     vt.state = t.state;
     vt.flags = t.flags;
-    vt.box = Box{static_cast<float>(t.box_px[0]), static_cast<float>(t.box_px[1]),
-                 static_cast<float>(t.box_px[2]), static_cast<float>(t.box_px[3])};
+    // Drawn on the frame as the tracker saw it (scaled down when the source is larger).
+    vt.box =
+        slot.scale.toSlot(Box{static_cast<float>(t.box_px[0]), static_cast<float>(t.box_px[1]),
+                              static_cast<float>(t.box_px[2]), static_cast<float>(t.box_px[3])});
     vt.confidence = static_cast<float>(t.confidence) / 65535.f;
     if (out.videoOk && !out.video.write(slot.frame(), vt, err, sizeof err)) {
       // Like any output: said once, tracking goes on, the exit code tells.
@@ -378,10 +392,10 @@ RunEnd runLoop(const AppOptions& opt, Pipeline& pipeline, const FrameSlot& slot,
     if (view.takeReselect(&picked)) {  // on the next frame, as a serial START would be
       platform::StartRequest start;
       start.kind = platform::StartRequest::Kind::BoxPx;
-      start.box = picked;
+      start.box = slot.scale.toSource(picked);  // a START's pixels are the source's
       pipeline.requestStart(start);
-      std::snprintf(err, sizeof err, "re-selected --box %g,%g,%g,%g", picked.x, picked.y, picked.w,
-                    picked.h);
+      std::snprintf(err, sizeof err, "re-selected --box %g,%g,%g,%g", start.box.x, start.box.y,
+                    start.box.w, start.box.h);
       reporter.report(err);
     }
     if (view.quitRequested()) {

@@ -15,11 +15,14 @@ const char* kAbout =
     "docs/mavlink.md).";
 
 const char* kFooter =
-    "--source (default: the Kinect when one is plugged in, else the synthetic scene\n"
-    "  'moving'): kinect:colour streams colour only: 2D tracking, 9.2 instead of 21.9 MB/s\n"
-    "  of USB (docs/kinect.md); SCENE: one of cuetrack-synth --list (docs/recordings.md);\n"
-    "  PATH: a fakenect recording folder (host builds with OpenCV also read RGB-D folders,\n"
-    "  OTB folders, .avi, and pan:/still: stills; docs/recordings.md).\n"
+    "--source (default: the Kinect when one is plugged in, else a V4L2 camera, else the\n"
+    "  synthetic scene 'moving'): kinect:colour streams colour only: 2D tracking, 9.2\n"
+    "  instead of 21.9 MB/s of USB (docs/kinect.md); camera[:N|:/dev/videoN]: a webcam or\n"
+    "  USB camera, colour only (host builds with OpenCV); SCENE: one of cuetrack-synth\n"
+    "  --list (docs/recordings.md); PATH: a fakenect recording folder (host builds with\n"
+    "  OpenCV also read RGB-D, OTB and image folders, videos: .avi .mp4 .mkv .mov ..., and\n"
+    "  pan:/still: stills; docs/recordings.md). Frames larger than 640x480 are scaled\n"
+    "  down for the tracker; boxes in and out stay in the source's own pixels.\n"
     "target (default: the ground truth where the target first shows, else wait for START;\n"
     "  no ground truth, no --box, --select or link for a START: exit 2, nothing to track).\n"
     "--show and --select need a display and a host build with OpenCV; in the window, space\n"
@@ -88,11 +91,15 @@ void declare(cli::Command& cmd, AppOptions* o) {
   AppOptions::Texts& t = o->texts;
   const std::string source = "source", target = "target", see = "see it", outputs = "outputs",
                     mavlink = "MAVLink (with --protocol mavlink)", run = "run";
-  cmd.option("--source", "kinect[:colour]|synth[:SCENE]|PATH", "the frames (below)",
+  cmd.option("--source", "kinect[:colour]|camera[:N]|synth[:SCENE]|PATH", "the frames (below)",
              [&t](const std::string& v) {
                // kinect:MODE: the tracker needs colour, so both streams or colour alone.
                if (v.compare(0, 7, "kinect:") == 0 && v != "kinect:colour" && v != "kinect:both")
                  return "expected kinect, kinect:both or kinect:colour (the tracker needs colour)";
+               if (v.compare(0, 7, "camera:") == 0 &&
+                   (v.size() == 7 ||
+                    (v[7] != '/' && v.find_first_not_of("0123456789", 7) != std::string::npos)))
+                 return "expected camera, camera:N or camera:/dev/videoN";
                t.source = v;
                return "";
              })

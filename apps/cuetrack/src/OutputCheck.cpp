@@ -4,6 +4,8 @@
 #include <cstring>
 
 #include "Sources.hpp"
+#include "cuetrack/drivers/MediaFiles.hpp"
+#include "cuetrack/drivers/OpenSource.hpp"
 #include "cuetrack/platform/linux/PathClash.hpp"
 
 namespace cuetrack::app {
@@ -26,7 +28,8 @@ bool checkOutputs(const AppOptions& opt, char* err, size_t errLen) {
   platform::NamedPath inputs[kMaxInputs];
   int nIn = 0;
   const char* spec = opt.source;
-  if (spec && std::strncmp(spec, "kinect", 6) != 0 && std::strncmp(spec, "synth", 5) != 0) {
+  if (spec && std::strncmp(spec, "kinect", 6) != 0 && std::strncmp(spec, "synth", 5) != 0 &&
+      !isCameraSpec(spec)) {
     const bool still = std::strncmp(spec, "still:", 6) == 0;
     if (still || std::strncmp(spec, "pan:", 4) == 0) {
       // pan:RGB,DEPTH,... / still:RGB,DEPTH,...:SCENE@...: the files named, before any ':'.
@@ -41,9 +44,9 @@ bool checkOutputs(const AppOptions& opt, char* err, size_t errLen) {
       }
     } else {
       inputs[nIn++] = {"--source", spec};
-      // A video's ground truth beside it (NAME.gt.txt) is an input too; a folder's is inside.
-      const size_t n = std::strlen(spec);
-      if (n > 4 && std::strcmp(spec + n - 4, ".avi") == 0) {
+      // A video's ground truth beside it (NAME.gt.txt or NAME.txt) is an input too; a
+      // folder's is inside.
+      if (rec::isVideoName(spec)) {
         describeGroundTruth(spec, paths[nIn], kPathBytes);
         inputs[nIn] = {"--source's ground truth", paths[nIn]};
         ++nIn;

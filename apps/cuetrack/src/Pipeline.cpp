@@ -85,7 +85,10 @@ bool Pipeline::startFromCommand(const Frame& frame, Box* initBox) {
   _startPending = false;
   _autoTargetTried = true;
   const char* why = "";
-  const Box box = startBoxPx(_start, frame);
+  // A box in pixels comes in the source's own pixels; the frame may be scaled down.
+  platform::StartRequest start = _start;
+  if (start.kind == platform::StartRequest::Kind::BoxPx) start.box = _slot.scale.toSlot(start.box);
+  const Box box = startBoxPx(start, frame);
   if (_tracker.init(frame, box, &why) == 0) {
     *initBox = box;
     if (_start.kind == platform::StartRequest::Kind::BoxPx) warnIfCorners(frame, box, "START");
@@ -94,9 +97,10 @@ bool Pipeline::startFromCommand(const Frame& frame, Box* initBox) {
     return true;
   }
   char line[200];
+  const Box said = _slot.scale.toSource(box);  // as the sender gave it
   std::snprintf(line, sizeof line, "%s START %g,%g,%g,%g refused: %s (the image is %dx%d)",
-                _options.linkName, box.x, box.y, box.w, box.h, why, frame.rgb.width,
-                frame.rgb.height);
+                _options.linkName, said.x, said.y, said.w, said.h, why,
+                _slot.scale.sourceWidth(frame.rgb.width), _slot.scale.sourceHeight(frame.rgb.height));
   _reporter.report(line);
   _tracker.reset();
   _targetActive = false;
@@ -110,7 +114,7 @@ bool Pipeline::startFromOptions(const Frame& frame, Box* initBox, bool* rejected
   // target is visible. Either is tried once.
   Box box{};
   if (_options.hasBox) {
-    box = _options.box;
+    box = _slot.scale.toSlot(_options.box);  // --box is in the source's own pixels
   } else if (_options.useGroundTruth && _slot.hasGroundTruth && !_slot.groundTruth.empty()) {
     box = _slot.groundTruth;
   } else {
@@ -128,15 +132,18 @@ bool Pipeline::startFromOptions(const Frame& frame, Box* initBox, bool* rejected
   }
   // Either ends the run: without it nothing would be tracked, ever.
   char line[512];
+  const Box said = _slot.scale.toSource(box);  // as the user or the file gave it
   if (_options.hasBox) {
     std::snprintf(line, sizeof line,
-                  "--box %g,%g,%g,%g refused by the tracker: %s (the image is %dx%d)", box.x, box.y,
-                  box.w, box.h, why, frame.rgb.width, frame.rgb.height);
+                  "--box %g,%g,%g,%g refused by the tracker: %s (the image is %dx%d)", said.x,
+                  said.y, said.w, said.h, why, _slot.scale.sourceWidth(frame.rgb.width),
+                  _slot.scale.sourceHeight(frame.rgb.height));
   } else {
     std::snprintf(line, sizeof line,
                   "%s: frame %d: box %g,%g,%g,%g refused by the tracker: %s (the image is %dx%d)",
                   _options.groundTruthName ? _options.groundTruthName : "ground truth", _slot.index,
-                  box.x, box.y, box.w, box.h, why, frame.rgb.width, frame.rgb.height);
+                  said.x, said.y, said.w, said.h, why, _slot.scale.sourceWidth(frame.rgb.width),
+                  _slot.scale.sourceHeight(frame.rgb.height));
   }
   _reporter.report(line);
   *rejected = true;
@@ -150,23 +157,40 @@ void Pipeline::warnIfPoorTarget(const Frame& frame, const Box& box, const char* 
   char issues[320];
   describeTargetIssues(check, issues, sizeof issues);
   char line[512];
+  const Box said = _slot.scale.toSource(box);
   std::snprintf(line, sizeof line,
                 "%s %g,%g,%g,%g: poor target: %s (the track may follow nothing; --select or "
                 "--snapshot FILE.png to pick another)",
-                origin, box.x, box.y, box.w, box.h, issues);
+                origin, said.x, said.y, said.w, said.h, issues);
   _reporter.report(line);
 }
 
-void Pipeline::warnIfCorners(const Frame& frame, const Box& box, const char* origin) {
+void Pipeline::sayScaling() {
+  if (!_options.sayScaling || _scalingSaid || !_slot.scale.scaled()) return;
+  _scalingSaid = true;
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "%s: %dx%d frames scaled down to %dx%d for the tracker; boxes in and out are in "
+                "the %dx%d pixels",
+                _options.sourceName ? _options.sourceName : _source.name(),
+                _slot.scale.sourceWidthPx, _slot.scale.sourceHeightPx, _slot.scale.widthPx,
+                _slot.scale.heightPx, _slot.scale.sourceWidthPx, _slot.scale.sourceHeightPx);
+  _reporter.report(line);
+}
+
+void Pipeline::warnIfCorners(const Frame& frame, const Box& slotBox, const char* origin) {
+  // Judged and said in the source's own pixels, as the box was given.
+  const Box box = _slot.scale.toSource(slotBox);
+  const int w = _slot.scale.sourceWidth(frame.rgb.width);
+  const int h = _slot.scale.sourceHeight(frame.rgb.height);
   Box xywh{};
-  if (!_options.warnPoorTarget || !looksLikeCorners(box, frame.rgb.width, frame.rgb.height, &xywh))
-    return;
+  if (!_options.warnPoorTarget || !looksLikeCorners(box, w, h, &xywh)) return;
   char line[320];
   std::snprintf(line, sizeof line,
                 "%s %g,%g,%g,%g runs past the %dx%d image as X,Y,W,H; if %g,%g is the bottom-right "
                 "corner, the box is %g,%g,%g,%g (X,Y,W,H)",
-                origin, box.x, box.y, box.w, box.h, frame.rgb.width, frame.rgb.height, box.w, box.h,
-                xywh.x, xywh.y, xywh.w, xywh.h);
+                origin, box.x, box.y, box.w, box.h, w, h, box.w, box.h, xywh.x, xywh.y, xywh.w,
+                xywh.h);
   _reporter.report(line);
 }
 
@@ -199,6 +223,7 @@ StepResult Pipeline::step() {
     _reporter.report(_source.error());
     return StepResult::SourceError;
   }
+  sayScaling();
   const Frame frame = _slot.frame();
   if (_targetActive && !_startPending && sizeChanged(frame)) return StepResult::SourceError;
   const uint64_t t0 = _clock.nowUs();
@@ -227,6 +252,7 @@ StepResult Pipeline::step() {
     result = _tracker.update(frame);
   }
   const uint64_t procUs = _clock.nowUs() - t0;
+  result.box = _slot.scale.toSource(result.box);  // every output speaks the source's pixels
   ctp_track_t msg = platform::toTrackMessage(
       result, frame.timeUs, static_cast<uint32_t>(procUs > 0xFFFFFFFFu ? 0xFFFFFFFFu : procUs),
       _state);
@@ -261,9 +287,9 @@ void Pipeline::emit(const ctp_track_t& msg, const Frame& frame) {
   if (_link) {
     platform::FrameReport report;
     report.track = msg;
-    report.widthPx = frame.rgb.width;
-    report.heightPx = frame.rgb.height;
-    report.intrinsics = frame.intrinsics;
+    report.widthPx = _slot.scale.sourceWidth(frame.rgb.width);
+    report.heightPx = _slot.scale.sourceHeight(frame.rgb.height);
+    report.intrinsics = _slot.scale.toSource(frame.intrinsics);
     _link->sendFrame(report);
   }
 }

@@ -1,5 +1,7 @@
 // One frame at a time: source -> tracker -> sinks and the serial link (either protocol,
-// behind platform::TrackLink), with commands from the link applied between frames. Owns no big
+// behind platform::TrackLink), with commands from the link applied between frames. The
+// tracker works in the slot's pixels; boxes in (--box, START) and out (sinks, link,
+// lastTrack) are in the source's own (FrameSlot::scale maps them, FrameScale.hpp). Owns no big
 // buffer: the frame slot, the tracker and the sources live in static storage in main().
 #pragma once
 
@@ -17,7 +19,7 @@ namespace cuetrack::app {
 struct PipelineOptions {
   int maxFrames = -1;           // stop after this many frames (-1: until the source ends)
   bool hasBox = false;          // --box: the target in the first frame
-  Box box{};                    // [px]
+  Box box{};                    // [px] of the source's own frame
   bool useGroundTruth = true;   // else wait for --box or a serial START
   uint64_t statusPeriodUs = 0;  // status line period; 0 = no status line
   // Frames the source lost (for the status line); nullptr: FrameSource::skippedFrames().
@@ -32,6 +34,8 @@ struct PipelineOptions {
   // (TargetCheck.hpp) or reads as corners (BoxFit.hpp); ground-truth boxes are taken as
   // they are.
   bool warnPoorTarget = false;
+  // Say once, at the first frame a source scales down, from what size to what.
+  bool sayScaling = false;
 };
 
 enum class StepResult : uint8_t {
@@ -93,6 +97,7 @@ class Pipeline final : public platform::LinkControl {
   void warnIfPoorTarget(const Frame& frame, const Box& box, const char* origin);
   // A box that reads as X0,Y0,X1,Y1 corners (BoxFit.hpp): one line with its X,Y,W,H.
   void warnIfCorners(const Frame& frame, const Box& box, const char* origin);
+  void sayScaling();
 
   FrameSource& _source;
   FrameSlot& _slot;
@@ -111,6 +116,7 @@ class Pipeline final : public platform::LinkControl {
   bool _targetActive{false};
   int _trackWidth{0}, _trackHeight{0};  // [px] of the frame the track began on
   bool _autoTargetTried{false};         // --box / ground truth is used once, at the start
+  bool _scalingSaid{false};
   bool _startPending{false};
   platform::StartRequest _start{};
   bool _stopRequested{false};

@@ -1,6 +1,7 @@
 // The grid snapshot on OpenCV (imgproc draws, imgcodecs writes the PNG).
 #include "Snapshot.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -9,7 +10,8 @@
 
 namespace cuetrack::app {
 
-bool writeSnapshot(const Frame& frame, const char* path, char* err, size_t errLen) {
+bool writeSnapshot(const Frame& frame, const char* path, char* err, size_t errLen,
+                   float xLabelScale, float yLabelScale) {
   cv::Mat img = toBgr(frame.rgb);
   const cv::Scalar line(0, 255, 255), text(255, 255, 255), shadow(0, 0, 0);
   auto label = [&](const char* s, cv::Point at) {
@@ -19,12 +21,12 @@ bool writeSnapshot(const Frame& frame, const char* path, char* err, size_t errLe
   char s[16];
   for (int x = kSnapshotGridPx; x < img.cols; x += kSnapshotGridPx) {
     cv::line(img, {x, 0}, {x, img.rows - 1}, line, 1);
-    std::snprintf(s, sizeof s, "%d", x);
+    std::snprintf(s, sizeof s, "%d", static_cast<int>(std::lround(x * xLabelScale)));
     label(s, {x + 2, 10});
   }
   for (int y = kSnapshotGridPx; y < img.rows; y += kSnapshotGridPx) {
     cv::line(img, {0, y}, {img.cols - 1, y}, line, 1);
-    std::snprintf(s, sizeof s, "%d", y);
+    std::snprintf(s, sizeof s, "%d", static_cast<int>(std::lround(y * yLabelScale)));
     label(s, {2, y - 2});
   }
   bool ok = false;

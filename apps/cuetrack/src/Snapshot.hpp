@@ -9,8 +9,11 @@
 namespace cuetrack::app {
 
 // Writes frame as a PNG with a labelled pixel grid every kSnapshotGridPx, so a box can be
-// read off it on a machine without a display. False + one line in err.
+// read off it on a machine without a display. The labels are multiplied by x/yLabelScale:
+// a frame scaled down from a larger source is labelled in the source's pixels, which
+// --box takes. False + one line in err.
 inline constexpr int kSnapshotGridPx = 40;
-bool writeSnapshot(const Frame& frame, const char* path, char* err, size_t errLen);
+bool writeSnapshot(const Frame& frame, const char* path, char* err, size_t errLen,
+                   float xLabelScale = 1.f, float yLabelScale = 1.f);
 
 }  // namespace cuetrack::app

@@ -9,13 +9,39 @@
 #if defined(CUETRACK_HAVE_KINECT)
 #include "cuetrack/drivers/KinectSource.hpp"
 #endif
+#include "cuetrack/drivers/MediaFiles.hpp"
 #include "cuetrack/drivers/OpenSource.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 
 namespace cuetrack::app {
 namespace {
 
-char gDefaultWhy[384] = "";  // why openSource(nullptr) chose what it chose
+char gDefaultWhy[512] = "";   // why openSource(nullptr) chose what it chose
+char gDefaultSpec[160] = "";  // and what, as --source would name it (empty: synth)
+
+// Recordings, videos and cameras: the project's one factory. Board builds have no OpenCV,
+// so there it opens fakenect recordings only (and says so for other formats). One
+// allocation, at start.
+FrameSource* openThroughFactory(const char* spec, uint64_t seed, bool skipBadFrames, char* err,
+                                size_t errLen) {
+  SourceOptions options;
+  options.seed = seed;
+  options.skipBadFrames = skipBadFrames;
+  static std::unique_ptr<FrameSource> recorded;
+  recorded = openFrameSource(spec, options, err, errLen);
+  return recorded.get();
+}
+
+// No Kinect: a V4L2 camera when one opens (gDefaultWhy says so), else nullptr.
+FrameSource* openDefaultCamera(const char* noKinect, uint64_t seed, char* err, size_t errLen) {
+  char device[128];
+  if (!findDefaultCamera(device, sizeof device)) return nullptr;
+  std::snprintf(gDefaultSpec, sizeof gDefaultSpec, "camera:%s", device);
+  std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
+                "%s, the camera plugged in (%.200s; --source to choose another)", gDefaultSpec,
+                noKinect);
+  return openThroughFactory(gDefaultSpec, seed, false, err, errLen);
+}
 
 FrameSource* openSynth(const char* scene, uint64_t seed, int frames, char* err, size_t errLen) {
   SceneSpec spec;
@@ -63,16 +89,19 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
                     "kinect, the Kinect plugged in (--source to choose another)");
       return openKinect(KinectStreams::Both, err, errLen);
     }
-    std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
-                  "synth:%s, a generated scene (%s%s; --source kinect|synth:SCENE|PATH to choose)",
-                  kDefaultScene, kinects < 0 ? "Kinect unusable: " : "no Kinect found",
-                  kinects < 0 ? why : "");
+    char noKinect[200];
+    std::snprintf(noKinect, sizeof noKinect, "%s%s",
+                  kinects < 0 ? "Kinect unusable: " : "no Kinect found", kinects < 0 ? why : "");
 #else
-    std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
-                  "synth:%s, a generated scene (this build has no Kinect driver; --source "
-                  "synth:SCENE|PATH to choose)",
-                  kDefaultScene);
+    const char* noKinect = "this build has no Kinect driver";
 #endif
+    if (FrameSource* camera = openDefaultCamera(noKinect, seed, err, errLen)) return camera;
+    if (gDefaultSpec[0] != '\0') return nullptr;  // a camera was there but failed: err says why
+    std::snprintf(gDefaultWhy, sizeof gDefaultWhy,
+                  "synth:%s, a generated scene (%s, %s; --source "
+                  "kinect|camera|synth:SCENE|PATH to choose)",
+                  kDefaultScene, noKinect,
+                  frameSourcesHaveOpenCv() ? "no camera found" : "no camera support in this build");
     return openSynth(kDefaultScene, seed, frames, err, errLen);
   }
   if (std::strcmp(spec, "kinect") == 0 || std::strncmp(spec, "kinect:", 7) == 0) {
@@ -90,14 +119,7 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   if (std::strncmp(spec, "synth:", 6) == 0 && !std::strchr(spec + 6, ':')) {
     return openSynth(spec + 6, seed, frames, err, errLen);
   }
-  // Recordings: the project's one factory. Board builds have no OpenCV, so there it opens
-  // fakenect recordings only (and says so for other formats). One allocation, at start.
-  SourceOptions options;
-  options.seed = seed;
-  options.skipBadFrames = skipBadFrames;
-  static std::unique_ptr<FrameSource> recorded;
-  recorded = openFrameSource(spec, options, err, errLen);
-  return recorded.get();
+  return openThroughFactory(spec, seed, skipBadFrames, err, errLen);
 }
 
 void describeSourceChoice(const char* spec, char* out, size_t outLen) {
@@ -117,8 +139,10 @@ bool kinectSupported() {
 }
 
 void describeGroundTruth(const char* spec, char* out, size_t outLen) {
+  if (!spec && gDefaultSpec[0] != '\0') spec = gDefaultSpec;  // the default chose a camera
   if (!spec || std::strncmp(spec, "kinect", 6) == 0 || std::strncmp(spec, "synth", 5) == 0 ||
-      std::strncmp(spec, "pan:", 4) == 0 || std::strncmp(spec, "still:", 6) == 0) {
+      std::strncmp(spec, "pan:", 4) == 0 || std::strncmp(spec, "still:", 6) == 0 ||
+      isCameraSpec(spec)) {
     if (spec) {
       std::snprintf(out, outLen, "%s ground truth", spec);
     } else {
@@ -127,8 +151,8 @@ void describeGroundTruth(const char* spec, char* out, size_t outLen) {
     return;
   }
   const size_t n = std::strlen(spec);
-  if (n > 4 && std::strcmp(spec + n - 4, ".avi") == 0) {  // BoBoT: NAME.avi + NAME.gt.txt
-    std::snprintf(out, outLen, "%.*s.gt.txt", static_cast<int>(n - 4), spec);
+  if (rec::isVideoName(spec)) {  // NAME.gt.txt (BoBoT) or NAME.txt (OTB)
+    std::snprintf(out, outLen, "%s", rec::videoGroundTruthPath(spec).c_str());
     return;
   }
   // A folder: OTB folders have groundtruth_rect.txt, fakenect and RGB-D groundtruth.txt.

@@ -9,7 +9,8 @@
 
 namespace cuetrack::app {
 
-// spec: nullptr (Kinect when present, else synth:<default scene>), "kinect",
+// spec: nullptr (Kinect when present, else a V4L2 camera when one opens, else
+// synth:<default scene>), "kinect", "camera[:N|:/dev/videoN]",
 // "synth" / "synth:SCENE", or a recording path. A synthetic scene runs for `frames`
 // frames when that is > 0 (the scene's own length otherwise). skipBadFrames: a recording
 // skips damaged frames (counted, skippedFrames()) instead of failing. nullptr + one line

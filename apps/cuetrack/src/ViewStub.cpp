@@ -26,7 +26,7 @@ PickResult pickBox(const Frame&, bool (*)(), Box*, char* err, size_t errLen) {
   fail(err, errLen);
   return PickResult::Cancelled;
 }
-bool writeSnapshot(const Frame&, const char*, char* err, size_t errLen) {
+bool writeSnapshot(const Frame&, const char*, char* err, size_t errLen, float, float) {
   return fail(err, errLen);
 }
 struct VideoOut::Impl {};

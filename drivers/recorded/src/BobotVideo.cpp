@@ -14,6 +14,7 @@
 
 #include "CvImages.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
+#include "cuetrack/drivers/MediaFiles.hpp"
 
 namespace cuetrack {
 
@@ -59,27 +60,27 @@ bool hookFfmpegLog() {
 BobotVideoReader::BobotVideoReader() : _video(new Video), _img(new CvImages) {}
 BobotVideoReader::~BobotVideoReader() = default;
 
-bool BobotVideoReader::open(const char* aviPath, const SourceOptions& opt) {
+bool BobotVideoReader::open(const char* videoPath, const SourceOptions& opt) {
   restart(opt);
-  _path = aviPath;
+  _path = videoPath;
   _name = rec::fileStem(_path);
-  if (!rec::isFile(aviPath)) {
-    std::snprintf(_error, sizeof _error, "%s: no such video file", aviPath);
+  if (!rec::isFile(videoPath)) {
+    std::snprintf(_error, sizeof _error, "%s: no such video file", videoPath);
     return false;
   }
   hookFfmpegLog();
   if (!_video->cap.open(_path, cv::CAP_FFMPEG) || !_video->cap.isOpened()) {
     std::snprintf(_error, sizeof _error, "%s: cannot open video (not a format OpenCV decodes)",
-                  aviPath);
+                  videoPath);
     return false;
   }
   const double n = _video->cap.get(cv::CAP_PROP_FRAME_COUNT);
   _frameCount = n > 0 ? static_cast<int>(std::lround(n)) : -1;
   const double fps = _video->cap.get(cv::CAP_PROP_FPS);
   _fps = fps > 1.0 && fps < 1000.0 ? fps : 25.0;
-  const size_t dot = _path.find_last_of('.');
-  const std::string gtPath = (dot == std::string::npos ? _path : _path.substr(0, dot)) + ".gt.txt";
-  return loadGroundTruth(gtPath, GtFormat::Bobot, _frameCount, "video frames");
+  const GtFormat format = rec::videoGroundTruthFormat(_path.c_str(), opt.gtPath);
+  return loadGroundTruth(rec::videoGroundTruthPath(_path.c_str()), format, _frameCount,
+                         "video frames");
 }
 
 uint64_t BobotVideoReader::frameTimeUs(int i) const {
@@ -117,11 +118,7 @@ RecordedReader::FrameRead BobotVideoReader::readFrame(int i, FrameSlot& out) {
                   i, _img->bgr.cols, _img->bgr.rows, _width, _height);
     return FrameRead::Bad;
   }
-  if (!copyColour(_img->bgr, _img->rgb, out)) {
-    std::snprintf(_error, sizeof _error, "%s: frame %d is %dx%d, larger than %dx%d", _path.c_str(),
-                  i, _img->bgr.cols, _img->bgr.rows, kMaxImageWidth, kMaxImageHeight);
-    return FrameRead::Bad;
-  }
+  copyColourFit(_img->bgr, *_img, out);  // a frame larger than the slot is scaled down
   out.hasDepth = false;
   return FrameRead::Ok;
 }

@@ -12,7 +12,7 @@ namespace cuetrack {
 
 // Decoders reuse these between frames, so reading allocates only when a size changes.
 struct CvImages {
-  cv::Mat bgr, depth, rgb;
+  cv::Mat bgr, depth, rgb, small;
 };
 
 // Colour as BGR, but a 16-bit image stays 16-bit so that it can be refused rather than
@@ -24,5 +24,8 @@ const char* depthName(int cvDepth);
 
 // BGR (or grey, or BGRA) Mat -> the slot's RGB, through rgbScratch; false when too large.
 bool copyColour(const cv::Mat& src, cv::Mat& rgbScratch, FrameSlot& out);
+// The same for colour-only sources of any size: a frame larger than the slot is scaled
+// down into it (aspect kept, pixel-area averaging), out.scale says how (FrameScale.hpp).
+void copyColourFit(const cv::Mat& src, CvImages& scratch, FrameSlot& out);
 
 }  // namespace cuetrack

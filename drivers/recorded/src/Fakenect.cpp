@@ -234,7 +234,7 @@ bool FakenectWriter::open(const char* dir, const char* sequenceName) {
     return false;
   }
   _count = 0;
-  _gtOpen = false;
+  _gt.start(_dir, _name);
   if (!_tableReady) {
     for (int mm = 0; mm <= kMaxDepthMm; ++mm)
       _mmToRaw[mm] = kinect::mmToRaw(static_cast<uint16_t>(mm));
@@ -296,19 +296,7 @@ bool FakenectWriter::write(const FrameSlot& frame) {
     std::fprintf(_index, "%s\n", file);
   }
 
-  if (frame.hasGroundTruth) {
-    if (!_gtOpen) {
-      if (_count > 0) {
-        std::snprintf(err, errLen, "%s: ground truth starts at frame %d, not 0", _dir.c_str(),
-                      _count);
-        return false;
-      }
-      const std::string gtPath = _dir + "/groundtruth.txt";
-      if (!_gt.open(gtPath.c_str(), GtFormat::Bobot, _name.c_str(), err, errLen)) return false;
-      _gtOpen = true;
-    }
-    _gt.write(frame.groundTruth, w, h);
-  }
+  if (!_gt.write(frame, _count, err, errLen)) return false;
   ++_count;
   return true;
 }
@@ -322,11 +310,7 @@ bool FakenectWriter::close() {
     ok = false;
   }
   _index = nullptr;
-  if (_gtOpen && !_gt.close()) {
-    std::snprintf(err, errLen, "%s/groundtruth.txt: write failed", _dir.c_str());
-    ok = false;
-  }
-  _gtOpen = false;
+  if (!_gt.close(err, errLen)) ok = false;
   return ok;
 }
 

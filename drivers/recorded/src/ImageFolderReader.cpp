@@ -137,7 +137,10 @@ bool ImageFolderReader::readColour(const std::string& rgbPath, FrameSlot& out) {
                   _img->bgr.cols, _img->bgr.rows, _width, _height);
     return false;
   }
-  if (!copyColour(_img->bgr, _img->rgb, out)) {
+  if (_depthFiles.empty()) {
+    copyColourFit(_img->bgr, *_img, out);  // colour only: a large image is scaled down
+  } else if (!copyColour(_img->bgr, _img->rgb, out)) {
+    // Depth and intrinsics would have to be scaled with it: RGB-D keeps the working size.
     std::snprintf(_error, sizeof _error, "%s: %dx%d is larger than %dx%d", rgbPath.c_str(),
                   _img->bgr.cols, _img->bgr.rows, kMaxImageWidth, kMaxImageHeight);
     return false;

@@ -36,6 +36,17 @@ bool copyColour(const cv::Mat& src, cv::Mat& rgbScratch, FrameSlot& out) {
   return true;
 }
 
+void copyColourFit(const cv::Mat& src, CvImages& scratch, FrameSlot& out) {
+  out.scale = FrameScale::fit(src.cols, src.rows);
+  if (!out.scale.scaled()) {
+    copyColour(src, scratch.rgb, out);  // fits: cannot fail
+    return;
+  }
+  cv::resize(src, scratch.small, cv::Size(out.scale.widthPx, out.scale.heightPx), 0, 0,
+             cv::INTER_AREA);
+  copyColour(scratch.small, scratch.rgb, out);
+}
+
 bool loadDepthPng16(const char* path, FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight>& out,
                     char* err, size_t errLen) {
   const cv::Mat m = cv::imread(path, cv::IMREAD_UNCHANGED);  // a colour PNG stays colour

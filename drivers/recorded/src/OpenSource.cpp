@@ -7,10 +7,12 @@
 
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
+#include "cuetrack/drivers/MediaFiles.hpp"
 #include "cuetrack/drivers/RecordedParsers.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #if CUETRACK_HAVE_OPENCV
 #include "cuetrack/drivers/BobotVideo.hpp"
+#include "cuetrack/drivers/CameraSource.hpp"
 #include "cuetrack/drivers/OtbFolder.hpp"
 #include "cuetrack/drivers/RgbdFolder.hpp"
 #include "cuetrack/drivers/StillPan.hpp"
@@ -20,14 +22,6 @@
 namespace cuetrack {
 
 namespace {
-
-bool endsWith(const std::string& s, const char* suffix) {
-  const size_t n = std::strlen(suffix);
-  if (s.size() < n) return false;
-  for (size_t i = 0; i < n; ++i)
-    if (std::tolower(static_cast<unsigned char>(s[s.size() - n + i])) != suffix[i]) return false;
-  return true;
-}
 
 std::unique_ptr<FrameSource> openSynth(const std::string& spec, const SourceOptions& opt, char* err,
                                        size_t errLen) {
@@ -79,7 +73,35 @@ std::unique_ptr<FrameSource> openWith(const char* path, const SourceOptions& opt
   return nullptr;
 }
 
+#if CUETRACK_HAVE_OPENCV
+std::unique_ptr<FrameSource> openCamera(const char* spec, char* err, size_t errLen) {
+  auto c = std::make_unique<CameraSource>();
+  if (!c->open(spec)) {
+    std::snprintf(err, errLen, "%s", c->error());
+    return nullptr;
+  }
+  return c;
+}
+#endif
+
 }  // namespace
+
+bool isCameraSpec(const char* spec) {
+  return spec && (std::strcmp(spec, "camera") == 0 || std::strncmp(spec, "camera:", 7) == 0);
+}
+
+bool findDefaultCamera(char* device, size_t deviceLen) {
+#if CUETRACK_HAVE_OPENCV
+  std::string d;
+  if (!findCamera(&d)) return false;
+  std::snprintf(device, deviceLen, "%s", d.c_str());
+  return true;
+#else
+  (void)device;
+  (void)deviceLen;
+  return false;
+#endif
+}
 
 bool frameSourcesHaveOpenCv() {
 #if CUETRACK_HAVE_OPENCV
@@ -94,7 +116,10 @@ const char* frameSourceHelp() {
          "  <dir>/ with INDEX.txt    fakenect recording (+ groundtruth.txt, BoBoT format)\n"
          "  <dir>/ with rgb/ depth/  RGB-D folder (+ groundtruth.txt, intrinsics.txt)  [OpenCV]\n"
          "  <dir>/ with img/         OTB folder (+ groundtruth_rect.txt)                [OpenCV]\n"
-         "  <file>.avi               BoBoT video (+ <file>.gt.txt)                      [OpenCV]\n"
+         "  <dir>/ of images         image folder (+ groundtruth_rect.txt)              [OpenCV]\n"
+         "  <file>.avi|.mp4|.mkv|.mov|...  a video (+ <file>.gt.txt BoBoT, or <file>.txt\n"
+         "                           OTB x,y,w,h); any size, scaled down to 640x480     [OpenCV]\n"
+         "  camera[:N|:/dev/videoN]  a V4L2/UVC camera, colour only                     [OpenCV]\n"
          "  pan:RGB,DEPTH,x,y,w,h,fx,fy,cx,cy[,mmPerUnit][:frames]\n"
          "                           a real RGB-D still panned (box in px; 150 frames)  [OpenCV]\n"
          "  still:RGB,DEPTH,fx,fy,cx,cy[,mmPerUnit]:SCENE@u,v,gapMm[:frames]\n"
@@ -111,6 +136,13 @@ std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptio
   const std::string s = spec;
   if (s.rfind("synth:", 0) == 0) return openSynth(s, opt, err, errLen);
   if (rec::pathTooLong(spec, err, errLen)) return nullptr;
+  if (isCameraSpec(spec)) {
+#if CUETRACK_HAVE_OPENCV
+    return openCamera(spec, err, errLen);
+#else
+    return needsOpenCv(spec, "a V4L2 camera", err, errLen);
+#endif
+  }
   if (s.rfind("pan:", 0) == 0) {
 #if CUETRACK_HAVE_OPENCV
     return openWith<StillPanReader>(spec, opt, err, errLen);
@@ -130,19 +162,19 @@ std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptio
       return openWith<FakenectReader>(spec, opt, err, errLen);
     const bool rgbd =
         rec::isDirectory((s + "/rgb").c_str()) && rec::isDirectory((s + "/depth").c_str());
-    const bool otb = rec::isDirectory((s + "/img").c_str());
+    const bool otb = rec::isDirectory((s + "/img").c_str()) || rec::folderHoldsImages(spec);
 #if CUETRACK_HAVE_OPENCV
     if (rgbd) return openWith<RgbdFolderReader>(spec, opt, err, errLen);
     if (otb) return openWith<OtbFolderReader>(spec, opt, err, errLen);
 #else
     if (rgbd) return needsOpenCv(spec, "an RGB-D folder (PNG)", err, errLen);
-    if (otb) return needsOpenCv(spec, "an OTB folder (JPEG)", err, errLen);
+    if (otb) return needsOpenCv(spec, "an OTB or image folder (JPEG, PNG)", err, errLen);
 #endif
-    std::snprintf(err, errLen, "%s: not a recording (no INDEX.txt, rgb/ + depth/, or img/ inside)",
-                  spec);
+    std::snprintf(err, errLen,
+                  "%s: not a recording (no INDEX.txt, rgb/ + depth/, img/ or images inside)", spec);
     return nullptr;
   }
-  if (endsWith(s, ".avi")) {
+  if (rec::isVideoName(spec)) {
     if (!rec::isFile(spec)) {
       std::snprintf(err, errLen, "%s: %s", spec,
                     rec::exists(spec) ? "not a regular file" : "no such file");
@@ -159,8 +191,8 @@ std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptio
   else if (!rec::isFile(spec))
     std::snprintf(err, errLen, "%s: not a recording (a device, FIFO or socket)", spec);
   else
-    std::snprintf(err, errLen, "%s: unknown format (expected .avi, a recording folder or synth:)",
-                  spec);
+    std::snprintf(err, errLen, "%s: unknown format (expected %s, a recording folder or synth:)",
+                  spec, rec::videoExtensionsText());
   return nullptr;
 }
 

@@ -12,7 +12,9 @@ namespace cuetrack {
 
 bool OtbFolderReader::open(const char* dir, const SourceOptions& opt) {
   startOpen(dir, opt);
-  if (!listImages(_dir + "/img", &_rgbFiles)) return false;
+  // An OTB folder has its images in img/; a plain image folder has them directly inside.
+  const std::string images = rec::isDirectory((_dir + "/img").c_str()) ? _dir + "/img" : _dir;
+  if (!listImages(images, &_rgbFiles)) return false;
   return finishOpen(_dir + "/groundtruth_rect.txt", GtFormat::Otb);
 }
 

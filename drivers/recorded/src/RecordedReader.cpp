@@ -38,6 +38,7 @@ ReadStatus RecordedReader::next(FrameSlot& out) {
   for (;;) {
     if (_opt.maxFrames >= 0 && _emitted >= _opt.maxFrames) return ReadStatus::End;
     const int i = _next;
+    out.scale = FrameScale{};  // a reader that scales its frame down says so in readFrame
     const FrameRead r = readFrame(i, out);
     if (r == FrameRead::End) return ReadStatus::End;
     if (r == FrameRead::Error) return ReadStatus::Error;
@@ -47,15 +48,19 @@ ReadStatus RecordedReader::next(FrameSlot& out) {
       ++_skipped;
       continue;
     }
+    // The source's own size: ground truth is in its pixels, mapped to the slot's.
+    const int sourceW = out.scale.sourceWidth(out.rgb.width());
+    const int sourceH = out.scale.sourceHeight(out.rgb.height());
     if (_width == 0) {
-      _width = out.rgb.width();
-      _height = out.rgb.height();
+      _width = sourceW;
+      _height = sourceH;
     }
     out.index = i;
     out.timeUs = frameTimeUs(i);
     out.intrinsics = frameIntrinsics(out.rgb.width(), out.rgb.height());
-    out.hasGroundTruth = _gt.boxAt(i, out.rgb.width(), out.rgb.height(), &out.groundTruth);
-    if (!out.hasGroundTruth) out.groundTruth = Box{};
+    Box truth{};
+    out.hasGroundTruth = _gt.boxAt(i, sourceW, sourceH, &truth);
+    out.groundTruth = out.hasGroundTruth && !truth.empty() ? out.scale.toSlot(truth) : Box{};
     ++_emitted;
     return ReadStatus::Ok;
   }

@@ -43,7 +43,7 @@ bool RgbdFolderWriter::open(const char* dir, const char* sequenceName) {
   _dir = dir;
   _name = sequenceName ? sequenceName : rec::fileStem(_dir + ".x");
   _count = 0;
-  _gtOpen = false;
+  _gt.start(_dir, _name);
   _wroteIntrinsics = false;
   if (rec::holdsRecording(dir, err, errLen)) return false;
   return rec::makeDirectories((_dir + "/rgb").c_str(), err, errLen) &&
@@ -82,34 +82,13 @@ bool RgbdFolderWriter::write(const FrameSlot& frame) {
     std::snprintf(err, errLen, "%s: cannot write", path);
     return false;
   }
-  if (frame.hasGroundTruth) {
-    if (!_gtOpen) {
-      if (_count > 0) {
-        std::snprintf(err, errLen, "%s: ground truth starts at frame %d, not 0", _dir.c_str(),
-                      _count);
-        return false;
-      }
-      if (!_gt.open((_dir + "/groundtruth.txt").c_str(), GtFormat::Bobot, _name.c_str(), err,
-                    errLen))
-        return false;
-      _gtOpen = true;
-    }
-    _gt.write(frame.groundTruth, w, h);
-  }
+  if (!_gt.write(frame, _count, err, errLen)) return false;
   ++_count;
   return true;
 }
 
 bool RgbdFolderWriter::close() {
-  char* err = _error;
-  const size_t errLen = sizeof _error;
-  if (_gtOpen && !_gt.close()) {
-    std::snprintf(err, errLen, "%s/groundtruth.txt: write failed (%s)", _dir.c_str(),
-                  std::strerror(errno));
-    return false;
-  }
-  _gtOpen = false;
-  return true;
+  return _gt.close(_error, sizeof _error);
 }
 
 }  // namespace cuetrack

@@ -10,6 +10,7 @@
 #include "cuetrack/core/Frame.hpp"
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/core/Image.hpp"
+#include "cuetrack/drivers/FrameScale.hpp"
 
 namespace cuetrack {
 
@@ -27,6 +28,8 @@ struct FrameSlot {
   // sources that know it exactly (synthetic scenes); scores TrackResult::positionMm.
   bool hasTruthMm = false;
   float truthCentreMm[3] = {0.f, 0.f, 0.f};
+  // How the source's own frame was scaled into rgb (FrameScale.hpp); not scaled by default.
+  FrameScale scale{};
 
   // Views for the tracker.
   Frame frame() const {

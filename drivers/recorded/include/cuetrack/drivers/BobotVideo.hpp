@@ -1,5 +1,8 @@
-// BoBoT videos (host only, cuetrack_recorded_cv): NAME.avi + NAME.gt.txt, ground truth in
-// the BoBoT format, frame N <-> box N. Colour only. No OpenCV type appears here.
+// Videos (host only, cuetrack_recorded_cv): BoBoT's NAME.avi + NAME.gt.txt (ground truth in
+// the BoBoT format, frame N <-> box N), and any other video FFmpeg decodes (.mp4, .mkv,
+// .mov, ...; ground truth beside it as MediaFiles.hpp says). Colour only; a frame larger
+// than the tracker's working size is scaled down (FrameScale.hpp), the ground truth read in
+// the video's own pixels. No OpenCV type appears here.
 #pragma once
 
 #include <memory>
@@ -12,14 +15,14 @@ namespace cuetrack {
 
 struct CvImages;  // cv::Mat buffers (CvImages.hpp)
 
-// NAME.gt.txt (or SourceOptions::gtPath) beside NAME.avi; a frame FFmpeg reports errors
+// NAME.gt.txt or NAME.txt (or SourceOptions::gtPath) beside NAME.EXT; a frame FFmpeg reports errors
 // for while decoding is damaged (Bad: skipped with skipBadFrames), and a video that ends
 // before its container's frame count or its ground truth's boxes is truncated.
 class BobotVideoReader final : public RecordedReader {
  public:
   BobotVideoReader();
   ~BobotVideoReader() override;
-  bool open(const char* aviPath, const SourceOptions& opt = {});
+  bool open(const char* videoPath, const SourceOptions& opt = {});
   int frameCount() const override { return _frameCount; }
   double nominalFps() const override { return _fps; }
   const GroundTruth& groundTruth() const { return _gt; }

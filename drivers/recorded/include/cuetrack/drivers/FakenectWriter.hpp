@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cuetrack/drivers/FrameSource.hpp"
-#include "cuetrack/drivers/GroundTruth.hpp"
+#include "cuetrack/drivers/GroundTruthOut.hpp"
 #include "cuetrack/drivers/KinectDepth.hpp"
 
 namespace cuetrack {
@@ -36,8 +36,7 @@ class FakenectWriter {
   std::string _dir;
   std::string _name;
   std::FILE* _index = nullptr;
-  GtWriter _gt;
-  bool _gtOpen = false;
+  GroundTruthOut _gt;
   int _count = 0;
   std::vector<uint8_t> _buf;
   uint16_t _mmToRaw[kMaxDepthMm + 1];  // depth [mm] -> raw disparity, built at open (20 KiB)

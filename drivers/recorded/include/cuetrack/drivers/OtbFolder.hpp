@@ -1,5 +1,8 @@
 // OTB sequence folders (host only, cuetrack_recorded_cv): img/0001.jpg ..., colour only,
-// and groundtruth_rect.txt (x,y,w,h in 1-based pixels, one line per frame).
+// and groundtruth_rect.txt (x,y,w,h in 1-based pixels, one line per frame). A plain image
+// folder (images directly inside, no img/) reads the same way, its groundtruth_rect.txt
+// inside it too. Images larger than the tracker's working size are scaled down
+// (FrameScale.hpp); the ground truth stays in the images' own pixels.
 #pragma once
 
 #include <string>

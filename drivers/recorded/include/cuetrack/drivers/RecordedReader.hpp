@@ -51,10 +51,12 @@ class RecordedReader : public FrameSource {
   std::string _name;
   SourceOptions _opt{};
   GroundTruth _gt;
-  int _next = 0;                // index of the next frame to read
-  int _emitted = 0;             // frames returned
-  int _skipped = 0;             // frames skipped as unreadable
-  int _width = 0, _height = 0;  // [px] of the first frame returned: every frame must match
+  int _next = 0;     // index of the next frame to read
+  int _emitted = 0;  // frames returned
+  int _skipped = 0;  // frames skipped as unreadable
+  // [px] of the first frame returned, in the source's own pixels (before any scaling
+  // down, FrameScale.hpp): every frame must match.
+  int _width = 0, _height = 0;
   char _error[768] = "";
 };
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "cuetrack/drivers/GroundTruth.hpp"
+#include "cuetrack/drivers/GroundTruthOut.hpp"
 #include "cuetrack/drivers/ImageFolderReader.hpp"
 
 namespace cuetrack {
@@ -30,8 +30,7 @@ class RgbdFolderWriter {
 
  private:
   std::string _dir, _name;
-  GtWriter _gt;
-  bool _gtOpen = false;
+  GroundTruthOut _gt;
   bool _wroteIntrinsics = false;
   int _count = 0;
   char _error[512] = "";
