@@ -100,7 +100,8 @@ bool Pipeline::startFromCommand(const Frame& frame, Box* initBox) {
   const Box said = _slot.scale.toSource(box);  // as the sender gave it
   std::snprintf(line, sizeof line, "%s START %g,%g,%g,%g refused: %s (the image is %dx%d)",
                 _options.linkName, said.x, said.y, said.w, said.h, why,
-                _slot.scale.sourceWidth(frame.rgb.width), _slot.scale.sourceHeight(frame.rgb.height));
+                _slot.scale.sourceWidth(frame.rgb.width),
+                _slot.scale.sourceHeight(frame.rgb.height));
   _reporter.report(line);
   _tracker.reset();
   _targetActive = false;
