@@ -7,7 +7,6 @@
 //   - a video with no decodable frame: exit 1 naming it.
 #include <catch2/catch.hpp>
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -26,13 +25,8 @@ constexpr int kTimeoutMs = 120000;  // generous: 2 cores shared by many builds
 
 int run(std::vector<const char*> argv, const std::string& err) {
   argv.push_back(nullptr);
-  ChildProcess p;
-  REQUIRE(p.start(argv.data(), "/dev/null", err.c_str()));
-  int status = -1;
-  if (!p.wait(kTimeoutMs, &status)) {
-    p.signal(SIGKILL);
-    return -1;
-  }
+  const int status = runToEnd(argv.data(), "/dev/null", err.c_str(), kTimeoutMs);
+  REQUIRE(status != kRunNotStarted);
   return status;
 }
 

@@ -6,8 +6,6 @@
 // device.
 #include <catch2/catch.hpp>
 
-#include <signal.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -27,13 +25,8 @@ constexpr int kFrames = 20;
 
 int run(std::vector<const char*> argv, const std::string& err) {
   argv.push_back(nullptr);
-  ChildProcess p;
-  REQUIRE(p.start(argv.data(), "/dev/null", err.c_str()));
-  int status = -1;
-  if (!p.wait(kTimeoutMs, &status)) {
-    p.signal(SIGKILL);
-    return -1;
-  }
+  const int status = runToEnd(argv.data(), "/dev/null", err.c_str(), kTimeoutMs);
+  REQUIRE(status != kRunNotStarted);
   return status;
 }
 

@@ -39,13 +39,8 @@ bool contains(const std::string& s, const char* part) {
 int run(std::vector<const char*> argv, const std::string& out, const std::string& err,
         int timeoutMs = kAppTimeoutMs) {
   argv.push_back(nullptr);
-  ChildProcess p;
-  REQUIRE(p.start(argv.data(), out.c_str(), err.c_str()));
-  int status = -1;
-  if (!p.wait(timeoutMs, &status)) {
-    p.signal(SIGKILL);
-    return -1;
-  }
+  const int status = runToEnd(argv.data(), out.c_str(), err.c_str(), timeoutMs);
+  REQUIRE(status != kRunNotStarted);
   return status;
 }
 
@@ -170,6 +165,31 @@ bool lastCsvBox(const std::string& csv, cv::Rect* box, size_t* rows) {
 // Runs an X tool to completion; true when it exited 0.
 bool xtool(std::vector<const char*> argv, const TempDir& tmp) {
   return run(std::move(argv), tmp.file("xtool.out"), tmp.file("xtool.err"), 30000) == 0;
+}
+
+// Waits for the picker's window, drags the mouse from (x0, y0) through the middle to
+// (x1, y1) in it, and accepts with Return. The key goes to the focused window through
+// XTEST: naming the window would race with its closing.
+bool dragInPicker(const char* xdotool, const TempDir& tmp, int x0, int y0, int x1, int y1) {
+  if (!xtool({xdotool, "search", "--sync", "--onlyvisible", "--name", "drag a box"}, tmp))
+    return false;
+  const std::vector<std::string> found = lines(slurp(tmp.file("xtool.out")));
+  if (found.empty()) return false;
+  const std::string id = found[0];
+  const std::string p[6] = {std::to_string(x0),
+                            std::to_string(y0),
+                            std::to_string((x0 + x1) / 2),
+                            std::to_string((y0 + y1) / 2),
+                            std::to_string(x1),
+                            std::to_string(y1)};
+  const char* w = id.c_str();
+  return xtool({xdotool, "windowfocus", "--sync", w}, tmp) &&
+         xtool({xdotool,      "mousemove",  "--window",   w,           "--sync",   p[0].c_str(),
+                p[1].c_str(), "mousedown",  "1",          "mousemove", "--window", w,
+                "--sync",     p[2].c_str(), p[3].c_str(), "mousemove", "--window", w,
+                "--sync",     p[4].c_str(), p[5].c_str(), "mouseup",   "1"},
+               tmp) &&
+         xtool({xdotool, "key", "Return"}, tmp);
 }
 
 }  // namespace
@@ -448,17 +468,8 @@ TEST_CASE("under Xvfb: --select takes the box a mouse drag draws, with and witho
                           nullptr};
     ChildProcess app;
     REQUIRE(app.start(argv, nullptr, err.c_str()));
-    REQUIRE(xtool({xdotool, "search", "--sync", "--onlyvisible", "--name", "drag a box"}, tmp));
-    const std::string id = lines(slurp(tmp.file("xtool.out")))[0];
-    // The target of synth:moving's first frame is at about 291,266,30,52. The key goes to
-    // the focused window through XTEST: naming the window would race with its closing.
-    REQUIRE(xtool({xdotool, "windowfocus", "--sync", id.c_str()}, tmp));
-    REQUIRE(xtool(
-        {xdotool,    "mousemove", "--window", id.c_str(), "--sync", "290",     "265", "mousedown",
-         "1",        "mousemove", "--window", id.c_str(), "--sync", "305",     "290", "mousemove",
-         "--window", id.c_str(),  "--sync",   "322",      "319",    "mouseup", "1"},
-        tmp));
-    REQUIRE(xtool({xdotool, "key", "Return"}, tmp));
+    // The target of synth:moving's first frame is at about 291,266,30,52.
+    REQUIRE(dragInPicker(xdotool, tmp, 290, 265, 322, 319));
     int status = -1;
     REQUIRE(app.wait(kAppTimeoutMs, &status));
     CHECK(status == 0);
@@ -563,17 +574,9 @@ TEST_CASE("under Xvfb: --select on a 1280x720 video picks a box in the video's p
                         "--out",          csv.c_str(), nullptr};
   ChildProcess app;
   REQUIRE(app.start(argv, nullptr, err.c_str()));
-  REQUIRE(xtool({xdotool, "search", "--sync", "--onlyvisible", "--name", "drag a box"}, tmp));
-  const std::string id = lines(slurp(tmp.file("xtool.out")))[0];
   // The picker shows the frame as the tracker sees it, 640x360: a drag over 360,110 to
   // 420,200 there is 720,220 to 840,400 in the video (the rectangle is at 704,216,213,180).
-  REQUIRE(xtool({xdotool, "windowfocus", "--sync", id.c_str()}, tmp));
-  REQUIRE(xtool(
-      {xdotool,    "mousemove", "--window", id.c_str(), "--sync", "360",     "110", "mousedown",
-       "1",        "mousemove", "--window", id.c_str(), "--sync", "390",     "150", "mousemove",
-       "--window", id.c_str(),  "--sync",   "420",      "200",    "mouseup", "1"},
-      tmp));
-  REQUIRE(xtool({xdotool, "key", "Return"}, tmp));
+  REQUIRE(dragInPicker(xdotool, tmp, 360, 110, 420, 200));
   int status = -1;
   REQUIRE(app.wait(kAppTimeoutMs, &status));
   CHECK(status == 0);

@@ -80,6 +80,18 @@ void ChildProcess::signal(int sig) {
   if (_pid > 0 && running()) ::kill(_pid, sig);
 }
 
+int runToEnd(const char* const* argv, const char* stdoutPath, const char* stderrPath,
+             int timeoutMs) {
+  ChildProcess p;
+  if (!p.start(argv, stdoutPath, stderrPath)) return kRunNotStarted;
+  int status = kRunTimedOut;
+  if (!p.wait(timeoutMs, &status)) {
+    p.signal(SIGKILL);
+    return kRunTimedOut;
+  }
+  return status;
+}
+
 PtyPair::PtyPair() {
   std::snprintf(_dir, sizeof _dir, "/tmp/cuetrack-pty-XXXXXX");
   if (!mkdtemp(_dir)) _dir[0] = '\0';

@@ -37,6 +37,12 @@ class ChildProcess {
   int _status{-1};
 };
 
+// Runs argv (ending with nullptr) to completion: its exit status; kRunTimedOut when it did
+// not end within timeoutMs (it is then killed), kRunNotStarted when it could not start.
+inline constexpr int kRunTimedOut = -1, kRunNotStarted = -2;
+int runToEnd(const char* const* argv, const char* stdoutPath, const char* stderrPath,
+             int timeoutMs);
+
 // socat PTY,raw,echo=0,link=DIR/a  PTY,raw,echo=0,link=DIR/b
 class PtyPair {
  public:

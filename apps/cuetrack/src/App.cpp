@@ -153,33 +153,48 @@ FrameSource* openFrameSource(AppOptions& opt, const Clock& clock, platform::Slee
   return source;
 }
 
-// When the target can only come from ground truth (no --box, --select, --snapshot), the
-// first frame says whether the source has any: read into the pipeline's slot, handed on as
-// the source's first frame. Without ground truth and without a link for a START, nothing
-// could be tracked: exit 2 (a run that idles to its end and exits 0 would mislead).
-// *groundTruth: the source has it (false when not looked at: a camera waited for).
-int checkGroundTruth(const AppOptions& opt, const char* groundTruthName, FrameSource*& source,
-                     FrameSlot& slot, bool* groundTruth, platform::Reporter& reporter) {
-  *groundTruth = false;
-  if (opt.hasBox || opt.select || opt.snapshotPath || !opt.useGroundTruth || liveCamera(opt))
-    return kGoOn;
-  const char* name = opt.source ? opt.source : source->name();
-  char err[1024] = "";
+// A source that gave no frame: one line naming it, and whether its frames were damaged.
+void reportNoFrame(const AppOptions& opt, const FrameSource& source, platform::Reporter& reporter) {
+  char err[512];
+  std::snprintf(err, sizeof err, "%.400s: no decodable frame%s",
+                opt.source ? opt.source : source.name(),
+                source.skippedFrames() > 0 ? " (every one damaged, skipped)" : " (it is empty)");
+  reporter.report(err);
+}
+
+// Reads the source's first frame into the pipeline's slot, before the run, and hands the
+// source on as one whose first frame is that slot (PrefetchedSource); kExitSource, said,
+// when there is none.
+int readFirstFrame(const AppOptions& opt, FrameSource*& source, FrameSlot& slot,
+                   platform::Reporter& reporter) {
   const ReadStatus rs = source->next(slot);
   if (rs == ReadStatus::Error) {
     reporter.report(source->error());
     return kExitSource;
   }
   if (rs == ReadStatus::End) {
-    std::snprintf(err, sizeof err, "%.400s: no decodable frame%s", name,
-                  source->skippedFrames() > 0 ? " (every one damaged, skipped)" : " (it is empty)");
-    reporter.report(err);
+    reportNoFrame(opt, *source, reporter);
     return kExitSource;
   }
   static PrefetchedSource prefetched(*source);
   source = &prefetched;
+  return kGoOn;
+}
+
+// When the target can only come from ground truth (no --box, --select, --snapshot), the
+// first frame says whether the source has any. Without ground truth and without a link for
+// a START, nothing could be tracked: exit 2 (a run that idles to its end and exits 0 would
+// mislead). *groundTruth: the source has it (false when not looked at: a camera waited for).
+int checkGroundTruth(const AppOptions& opt, const char* groundTruthName, FrameSource*& source,
+                     FrameSlot& slot, bool* groundTruth, platform::Reporter& reporter) {
+  *groundTruth = false;
+  if (opt.hasBox || opt.select || opt.snapshotPath || !opt.useGroundTruth || liveCamera(opt))
+    return kGoOn;
+  if (const int code = readFirstFrame(opt, source, slot, reporter); code != kGoOn) return code;
   *groundTruth = slot.hasGroundTruth;
   if (*groundTruth || userTargetPossible(opt)) return kGoOn;
+  const char* name = opt.source ? opt.source : source->name();
+  char err[1024] = "";
   const size_t n = std::strlen(groundTruthName);
   if (n > 4 && std::strcmp(groundTruthName + n - 4, ".txt") == 0) {
     std::snprintf(err, sizeof err,
@@ -200,19 +215,8 @@ int checkGroundTruth(const AppOptions& opt, const char* groundTruthName, FrameSo
 int resolveStartBox(AppOptions& opt, FrameSource*& source, FrameSlot& slot, LiveView& view,
                     platform::Reporter& reporter) {
   if (!opt.select && !opt.snapshotPath) return kGoOn;
+  if (const int code = readFirstFrame(opt, source, slot, reporter); code != kGoOn) return code;
   char err[512] = "";
-  const ReadStatus rs = source->next(slot);
-  if (rs != ReadStatus::Ok) {
-    if (rs == ReadStatus::Error) {
-      reporter.report(source->error());
-    } else {
-      std::snprintf(err, sizeof err, "%s: no frame to %s (the source is empty)",
-                    opt.source ? opt.source : source->name(),
-                    opt.select ? "select on" : "snapshot");
-      reporter.report(err);
-    }
-    return kExitSource;
-  }
   if (opt.snapshotPath) {
     if (!writeSnapshot(slot.frame(), opt.snapshotPath, err, sizeof err, slot.scale.xFactor(),
                        slot.scale.yFactor())) {
@@ -251,8 +255,6 @@ int resolveStartBox(AppOptions& opt, FrameSource*& source, FrameSlot& slot, Live
   std::snprintf(err, sizeof err, "picked --box %g,%g,%g,%g (give it to later runs)", opt.box.x,
                 opt.box.y, opt.box.w, opt.box.h);
   reporter.report(err);
-  static PrefetchedSource prefetched(*source);
-  source = &prefetched;
   return kGoOn;
 }
 
@@ -439,11 +441,7 @@ bool reportEmptySource(const AppOptions& opt, const FrameSource& source, const P
                        const RunEnd& end, platform::Reporter& reporter) {
   if (end.result != StepResult::Done || pipeline.frames() != 0 || platform::stopRequested())
     return false;
-  char err[512];
-  std::snprintf(err, sizeof err, "%s: no decodable frame%s",
-                opt.source ? opt.source : source.name(),
-                source.skippedFrames() > 0 ? " (every one damaged, skipped)" : " (it is empty)");
-  reporter.report(err);
+  reportNoFrame(opt, source, reporter);
   return true;
 }
 
