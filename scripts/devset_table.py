@@ -4,9 +4,10 @@ column per tracker entry (mean overlap over seeds, %), then the averages, their
 seed-to-seed spread, hit rate, AUC and precision at 20 px. With two or more cuetrack
 entries, the last column is the first minus the second, '*' where the difference is
 larger than the spread of either (the team's rule for a change: docs/algorithm.md).
-With --real N, the first line is the average over the first N sequences (the real
-videos: the figure that counts), each tracker's overlap with its seed spread and hit rate.
-Usage: devset_table.py [--real N] DEVSET.json [OUT.md]"""
+Each --group LABEL:FIRST:COUNT prints first a line with the average over those sequences
+(the real videos: the figure that counts; the randomised RGB-D group), each tracker's
+overlap with its seed spread and hit rate; --real N is --group "real videos:0:N".
+Usage: devset_table.py [--group LABEL:FIRST:COUNT ...] [--real N] DEVSET.json [OUT.md]"""
 import json
 import statistics
 import sys
@@ -16,11 +17,11 @@ def fmt(v, d=1):
     return "n/a" if v is None else f"{v:.{d}f}"
 
 
-def group_line(entries, labels, n):
-    """The average of the first n sequences per tracker: overlap (seed spread), hit rate."""
+def group_line(entries, labels, name, first, n):
+    """The average of sequences first..first+n-1 per tracker: overlap (seed spread), hit rate."""
     parts = []
     for e, l in zip(entries, labels):
-        seqs = [s for s in e["sequences"][:n] if s["overlap"] is not None]
+        seqs = [s for s in e["sequences"][first:first + n] if s["overlap"] is not None]
         if not seqs:
             parts.append(f"{l} not run")
             continue
@@ -34,13 +35,17 @@ def group_line(entries, labels, n):
             per_seed = [sum(r[i] for r in runs) / n for i in range(k)]
             spread = f" (spread {statistics.stdev(per_seed):.2f})"
         parts.append(f"{l} {over:.2f}{spread} hit {hit:.2f}")
-    return f"real videos ({n}): overlap / hit rate [%]: " + "; ".join(parts)
+    return f"{name} ({n}): overlap / hit rate [%]: " + "; ".join(parts)
 
 
 def main():
-    real = 0
-    if len(sys.argv) > 2 and sys.argv[1] == "--real":
-        real = int(sys.argv[2])
+    groups = []
+    while len(sys.argv) > 2 and sys.argv[1] in ("--real", "--group"):
+        if sys.argv[1] == "--real":
+            groups.append(("real videos", 0, int(sys.argv[2])))
+        else:
+            name, first, n = sys.argv[2].rsplit(":", 2)
+            groups.append((name, int(first), int(n)))
         del sys.argv[1:3]
     entries = json.load(open(sys.argv[1]))
     if isinstance(entries, dict):
@@ -87,7 +92,7 @@ def main():
     widths = [max(len(str(r[i])) for r in [head] + rows + summary) for i in range(len(head))]
     line = lambda r: "  ".join(str(c).ljust(widths[0]) if i == 0 else str(c).rjust(widths[i])
                                for i, c in enumerate(r))
-    first = group_line(entries, label, real) if real > 0 else None
+    first = "\n".join(group_line(entries, label, g, f, n) for g, f, n in groups if n > 0)
     if first:
         print(first)
     print("Mean overlap [%] over seeds, per sequence; averages over the sequences")

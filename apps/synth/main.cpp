@@ -9,6 +9,7 @@
 #include "SequenceOut.hpp"
 #include "cuetrack/cli/Command.hpp"
 #include "cuetrack/cli/Values.hpp"
+#include "cuetrack/drivers/OpenSource.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
@@ -26,6 +27,9 @@ const char* kAbout =
     "or an RGB-D folder (rgb/, depth/ 16-bit PNG mm, intrinsics.txt; needs OpenCV);\n"
     "otb (img/*.jpg + groundtruth_rect.txt) and avi (MJPG video + .gt.txt, --out is\n"
     "the .avi path) are colour only, for the RGB benchmarks' formats (need OpenCV).\n"
+    "A scene is a named one below, or rand:SEED[:DATA], one drawn from SEED out of the\n"
+    "randomised scenes (docs/synthetic.md); DATA, the shared data folder, adds real\n"
+    "Kinect stills as backdrops and textures cut from real videos (needs OpenCV).\n"
     "  cuetrack-synth --scene NAME --out DIR [--format fakenect|rgbd|otb|avi]\n"
     "                 [--frames N] [--seed S] [--size WxH] [--force]\n"
     "  cuetrack-synth --list";
@@ -59,7 +63,8 @@ int main(int argc, char** argv) {
   bool force = false, list = false;
   char err[600] = "";
   cli::Command cmd("cuetrack-synth", std::string(kAbout) + sceneTable(), kExitCodes);
-  cmd.text("--scene", "NAME", "a scene below (default frames: 150 at 30 fps)", &scene);
+  cmd.text("--scene", "NAME", "a scene below or rand:SEED[:DATA] (150 frames at 30 fps)",
+           &scene);
   cmd.text("--out", "DIR", "the folder to write (the .avi file for --format avi)", &out);
   cmd.text("--format", "FORMAT", "fakenect (default), rgbd, otb or avi", &format);
   cmd.number("--frames", "N", "number of frames (1..100000)", 1, 100000, &frames);
@@ -78,19 +83,30 @@ int main(int argc, char** argv) {
     return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : cli::kExitFailed;
   }
   if (scene.empty() || out.empty()) return cmd.fail("--scene and --out are required (see --help)");
-  SceneSpec spec;
-  if (!makeScene(scene.c_str(), &spec, err, sizeof err)) return cmd.fail(err);
-  if (frames > 0) spec.frameCount = frames;
-  spec.width = width;
-  spec.height = height;
-  auto src = std::make_unique<SyntheticSource>(spec, seed);
+  std::unique_ptr<FrameSource> src;
+  if (scene.rfind("rand:", 0) == 0) {
+    // Drawn scenes come through the readers' one factory (the stills need OpenCV).
+    if (width != 640 || height != 480) return cmd.fail("--size is for the named scenes only");
+    SourceOptions opt;
+    opt.seed = seed;
+    opt.maxFrames = frames > 0 ? frames : -1;
+    src = openFrameSource(scene.c_str(), opt, err, sizeof err);
+    if (!src) return cmd.fail(err);
+  } else {
+    SceneSpec spec;
+    if (!makeScene(scene.c_str(), &spec, err, sizeof err)) return cmd.fail(err);
+    if (frames > 0) spec.frameCount = frames;
+    spec.width = width;
+    spec.height = height;
+    src = std::make_unique<SyntheticSource>(spec, seed);
+  }
   int n = 0;
   if (const int rc = writeSequence("cuetrack-synth", *src, format.c_str(), out.c_str(),
-                                   scene.c_str(), force, gSlot, &n);
+                                   src->name(), force, gSlot, &n);
       rc != 0)
     return rc;
   std::printf("cuetrack-synth: wrote %d frames of '%s' (%dx%d, seed %llu) to %s (%s)\n", n,
-              scene.c_str(), spec.width, spec.height, static_cast<unsigned long long>(seed),
-              out.c_str(), format.c_str());
+              src->name(), gSlot.rgb.width(), gSlot.rgb.height(),
+              static_cast<unsigned long long>(seed), out.c_str(), format.c_str());
   return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : cli::kExitFailed;
 }

@@ -9,11 +9,14 @@
 #include "cuetrack/drivers/FileBuffer.hpp"
 #include "cuetrack/drivers/MediaFiles.hpp"
 #include "cuetrack/drivers/RecordedParsers.hpp"
+#include "cuetrack/drivers/SceneDraw.hpp"
+#include "cuetrack/drivers/StillSpecs.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #if CUETRACK_HAVE_OPENCV
 #include "cuetrack/drivers/BobotVideo.hpp"
 #include "cuetrack/drivers/CameraSource.hpp"
 #include "cuetrack/drivers/OtbFolder.hpp"
+#include "cuetrack/drivers/RandomScene.hpp"
 #include "cuetrack/drivers/RgbdFolder.hpp"
 #include "cuetrack/drivers/StillPan.hpp"
 #include "cuetrack/drivers/StillScene.hpp"
@@ -48,6 +51,37 @@ std::unique_ptr<FrameSource> openSynth(const std::string& spec, const SourceOpti
   if (frames > 0) s.frameCount = frames;
   if (opt.maxFrames >= 0 && opt.maxFrames < s.frameCount) s.frameCount = opt.maxFrames;
   auto src = std::make_unique<SyntheticSource>(s, opt.seed);
+  if (src->error()[0]) {
+    std::snprintf(err, errLen, "%s", src->error());
+    return nullptr;
+  }
+  return src;
+}
+
+// rand:SEED: the drawn scene in the generated room, any build; rand:SEED:DATA over the
+// real stills and video textures (RandomSceneReader, OpenCV).
+std::unique_ptr<FrameSource> openRandom(const char* spec, const SourceOptions& opt, char* err,
+                                        size_t errLen) {
+  rec::RandomSpec p;
+  if (!rec::parseRandomSpec(spec, &p, err, errLen)) return nullptr;
+  if (!p.dataDir.empty()) {
+#if CUETRACK_HAVE_OPENCV
+    auto r = std::make_unique<RandomSceneReader>();
+    if (!r->open(spec, opt)) {
+      std::snprintf(err, errLen, "%s", r->error());
+      return nullptr;
+    }
+    return r;
+#else
+    std::snprintf(err, errLen, "%s: real stills and textures need a host build with OpenCV "
+                  "(rand:%llu alone draws the generated room)", spec, p.seed);
+    return nullptr;
+#endif
+  }
+  SceneDraw d;
+  drawScene(p.seed, nullptr, 0, false, &d);
+  if (opt.maxFrames >= 0 && opt.maxFrames < d.spec.frameCount) d.spec.frameCount = opt.maxFrames;
+  auto src = std::make_unique<SyntheticSource>(d.spec, opt.seed);
   if (src->error()[0]) {
     std::snprintf(err, errLen, "%s", src->error());
     return nullptr;
@@ -113,6 +147,9 @@ bool frameSourcesHaveOpenCv() {
 
 const char* frameSourceHelp() {
   return "  synth:<scene>[:frames]   synthetic RGB-D scene (cuetrack-synth --list)\n"
+         "  rand:SEED[:DATA]         a synthetic RGB-D scene drawn from SEED; with DATA (the\n"
+         "                           shared data folder) over real Kinect stills, with\n"
+         "                           textures cut from real videos              [OpenCV]\n"
          "  <dir>/ with INDEX.txt    fakenect recording (+ groundtruth.txt, BoBoT format)\n"
          "  <dir>/ with rgb/ depth/  RGB-D folder (+ groundtruth.txt, intrinsics.txt)  [OpenCV]\n"
          "  <dir>/ with img/         OTB folder (+ groundtruth_rect.txt)                [OpenCV]\n"
@@ -135,6 +172,7 @@ std::unique_ptr<FrameSource> openFrameSource(const char* spec, const SourceOptio
   }
   const std::string s = spec;
   if (s.rfind("synth:", 0) == 0) return openSynth(s, opt, err, errLen);
+  if (s.rfind("rand:", 0) == 0) return openRandom(spec, opt, err, errLen);
   if (rec::pathTooLong(spec, err, errLen)) return nullptr;
   if (isCameraSpec(spec)) {
 #if CUETRACK_HAVE_OPENCV

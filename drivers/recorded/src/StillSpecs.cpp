@@ -1,5 +1,6 @@
 #include "cuetrack/drivers/StillSpecs.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -170,6 +171,31 @@ std::string stillLabel(const std::string& rgbPath) {
   if ((folder == "color" || folder == "rgb") && dir.find('/') != std::string::npos)
     folder = lastPart(dir.substr(0, dir.find_last_of('/')));
   return (folder.empty() ? std::string() : folder + "-") + fileStem(rgbPath);
+}
+
+bool parseRandomSpec(const char* spec, RandomSpec* out, char* err, size_t errLen) {
+  static const char kSyntax[] = "rand:SEED[:DATA]";
+  std::string body = spec ? spec : "";
+  if (body.rfind("rand:", 0) == 0) body = body.substr(5);
+  const size_t colon = body.find(':');
+  const std::string seed = body.substr(0, colon);
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long v = std::strtoull(seed.c_str(), &end, 10);
+  if (seed.empty() || seed.find_first_not_of("0123456789") != std::string::npos || errno != 0 ||
+      *end != '\0') {
+    std::snprintf(err, errLen, "%s: the seed '%s' is not a whole number (expected %s)", spec,
+                  seed.c_str(), kSyntax);
+    return false;
+  }
+  out->seed = v;
+  out->dataDir = colon == std::string::npos ? std::string() : body.substr(colon + 1);
+  if (colon != std::string::npos && out->dataDir.empty()) {
+    std::snprintf(err, errLen, "%s: the data folder after the seed is empty (expected %s)", spec,
+                  kSyntax);
+    return false;
+  }
+  return true;
 }
 
 }  // namespace cuetrack::rec

@@ -256,7 +256,8 @@ void SyntheticSource::renderObject(const Posed& p, FrameSlot& out, bool isTarget
           nx = (ts * dx - X) / R;
           nz = (ts - Z) / R;
           ny = 0.f;
-          s = R * std::atan2(nx, -nz);
+          // A spinning cylinder turns its texture with it (p.yawRad 0: as ever).
+          s = R * (p.yawRad != 0.f ? std::atan2(nx, -nz) - p.yawRad : std::atan2(nx, -nz));
           q = ys - yTop;
         } else {
           // The cap facing the camera (top when the camera looks down on it).

@@ -27,6 +27,9 @@ inline int floorToInt(float v) {
   return i - (static_cast<float>(i) > v);
 }
 
+// Where a motion puts its object at time tS [s] (MotionSpec's formula; SyntheticSource.cpp).
+void motionPosition(const MotionSpec& m, float tS, float outMm[3]);
+
 // A kTextureSize x kTextureSize tile of t's pattern (SceneRaster.cpp).
 void makeTexture(const TextureSpec& t, Rgb8* tex);
 

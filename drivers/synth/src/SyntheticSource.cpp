@@ -55,7 +55,10 @@ SyntheticSource::SyntheticSource(const SceneSpec& spec, uint64_t seed) : _spec(s
 }
 
 void SyntheticSource::objectPosition(int i, float tS, float outMm[3]) const {
-  const MotionSpec& m = _spec.objects[i].motion;
+  synth::motionPosition(_spec.objects[i].motion, tS, outMm);
+}
+
+void synth::motionPosition(const MotionSpec& m, float tS, float outMm[3]) {
   const bool jumped = m.jumpAtS >= 0.f && tS >= m.jumpAtS;
   for (int a = 0; a < 3; ++a) {
     if (jumped) {
@@ -119,6 +122,7 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
     const SceneObject& o = _spec.objects[i];
     const float yaw = objectYaw(i, tS);
     posed[i].yawed = o.shape == ShapeKind::Box && yaw != 0.f;
+    posed[i].yawRad = yaw;
     posed[i].cosYaw = posed[i].yawed ? std::cos(yaw) : 1.f;
     posed[i].sinYaw = posed[i].yawed ? std::sin(yaw) : 0.f;
   }
@@ -158,6 +162,11 @@ bool SyntheticSource::render(int index, FrameSlot& out) {
   out.hasTruthMm = true;
   for (int a = 0; a < 3; ++a) out.truthCentreMm[a] = _truth.centreMm[a];
   return true;
+}
+
+void SyntheticSource::setObjectTexture(int i, const Rgb8* tile) {
+  if (i < 0 || i >= kMaxSceneObjects || !tile) return;
+  for (int t = 0; t < kTextureSize * kTextureSize; ++t) _objectTexture[i][t] = tile[t];
 }
 
 void SyntheticSource::setBackdrop(const Rgb8* rgb, const uint16_t* depthMm,

@@ -1,4 +1,4 @@
-// The pan: and still: source specs (openFrameSource), parsed without reading the still:
+// The pan:, still: and rand: source specs (openFrameSource), parsed without reading the still:
 // no OpenCV here, so the board builds it and libFuzzer drives it (fuzz_recorded_specs).
 // The readers (StillPan.hpp, StillScene.hpp) then load the images and check what needs
 // them (the box inside the still, the scene's placement). Each parser returns false with
@@ -35,6 +35,13 @@ struct StillSpec {
   int frames = -1;                 // -1: the scene's own
 };
 bool parseStillSpec(const char* spec, StillSpec* out, char* err, size_t errLen);
+
+// rand:SEED[:DATA] (RandomScene.hpp): SEED a decimal number, DATA the shared data folder.
+struct RandomSpec {
+  unsigned long long seed = 0;
+  std::string dataDir;  // empty: the generated room and procedural textures only
+};
+bool parseRandomSpec(const char* spec, RandomSpec* out, char* err, size_t errLen);
 
 // A still's label for sequence names: the folder above color/ or rgb/ (or its own
 // folder) and the image's stem, e.g. "nyu-joinmap-5" for nyu/rgb/joinmap-5.png.

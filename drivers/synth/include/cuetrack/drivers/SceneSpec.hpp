@@ -61,8 +61,8 @@ struct SceneObject {
   float heightMm = 200.f;    // [mm]
   // Boxes: yaw about the vertical (camera y) axis, yawRad + yawRateRadPerS * t
   // + yawAmplitudeRad * sin(2 pi t / yawPeriodS + yawPhaseRad); positive turns the box's +x
-  // side away from the camera (towards +z). Cylinders: unused. A yaw of 0 (all zero, the
-  // default) renders exactly the axis-aligned box.
+  // side away from the camera (towards +z). Cylinders: the texture turns with it (a spin).
+  // A yaw of 0 (all zero, the default) renders exactly the axis-aligned box.
   float yawRad = 0.f;
   float yawRateRadPerS = 0.f;
   float yawAmplitudeRad = 0.f;

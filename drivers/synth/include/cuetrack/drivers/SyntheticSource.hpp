@@ -71,6 +71,9 @@ class SyntheticSource final : public FrameSource {
   // as it is except where an object covers it or shadows it; colour noise and lighting
   // apply to the whole frame. Call before the first frame.
   void setBackdrop(const Rgb8* rgb, const uint16_t* depthMm, const CameraIntrinsics& k);
+  // Object i's texture tile (kTextureSize x kTextureSize, row-major) in place of the one
+  // its TextureSpec makes, e.g. a patch of a real video frame. Call before the first frame.
+  void setObjectTexture(int i, const Rgb8* tile);
 
  private:
   using Texture = Rgb8[kTextureSize * kTextureSize];
@@ -78,6 +81,7 @@ class SyntheticSource final : public FrameSource {
     int index;
     float c[3];
     bool yawed;            // a box with a non-zero yaw at this frame
+    float yawRad;          // its yaw; a cylinder's turns its texture
     float cosYaw, sinYaw;  // its rotation (local -> camera: x = c lx - s lz, z = s lx + c lz)
   };
 
