@@ -63,8 +63,7 @@ int main(int argc, char** argv) {
   bool force = false, list = false;
   char err[600] = "";
   cli::Command cmd("cuetrack-synth", std::string(kAbout) + sceneTable(), kExitCodes);
-  cmd.text("--scene", "NAME", "a scene below or rand:SEED[:DATA] (150 frames at 30 fps)",
-           &scene);
+  cmd.text("--scene", "NAME", "a scene below or rand:SEED[:DATA] (150 frames at 30 fps)", &scene);
   cmd.text("--out", "DIR", "the folder to write (the .avi file for --format avi)", &out);
   cmd.text("--format", "FORMAT", "fakenect (default), rgbd, otb or avi", &format);
   cmd.number("--frames", "N", "number of frames (1..100000)", 1, 100000, &frames);
@@ -101,8 +100,8 @@ int main(int argc, char** argv) {
     src = std::make_unique<SyntheticSource>(spec, seed);
   }
   int n = 0;
-  if (const int rc = writeSequence("cuetrack-synth", *src, format.c_str(), out.c_str(),
-                                   src->name(), force, gSlot, &n);
+  if (const int rc = writeSequence("cuetrack-synth", *src, format.c_str(), out.c_str(), src->name(),
+                                   force, gSlot, &n);
       rc != 0)
     return rc;
   std::printf("cuetrack-synth: wrote %d frames of '%s' (%dx%d, seed %llu) to %s (%s)\n", n,

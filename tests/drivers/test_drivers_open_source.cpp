@@ -43,6 +43,16 @@ TEST_CASE("openFrameSource opens synth and fakenect specs", "[open]") {
   s = openFrameSource((tmp / "rec").c_str(), SourceOptions{}, err, sizeof err);
   REQUIRE(s);
   CHECK(s->frameCount() == 3);
+
+  // A drawn scene in the generated room: any build, the target in the first frame.
+  opt.maxFrames = 2;
+  s = openFrameSource("rand:5", opt, err, sizeof err);
+  REQUIRE(s);
+  CHECK(std::string(s->name()) == "rand-5");
+  REQUIRE(s->next(*f) == ReadStatus::Ok);
+  CHECK(f->hasGroundTruth);
+  CHECK_FALSE(f->groundTruth.empty());
+  CHECK(f->hasDepth);
 }
 
 TEST_CASE("openFrameSource errors are one line naming the spec", "[open][bad]") {
@@ -55,6 +65,9 @@ TEST_CASE("openFrameSource errors are one line naming the spec", "[open][bad]") 
       {"synth:nope", "unknown scene 'nope'"},
       {"synth:moving:0", "is not a number"},
       {"synth:moving:x", "is not a number"},
+      {"rand:x", "the seed 'x' is not a whole number"},
+      {"rand:2:" + tmp / "nodata", frameSourcesHaveOpenCv() ? "has no kinect-stills/ and otb/"
+                                                            : "need a host build with OpenCV"},
       {tmp / "absent", "no such file or folder"},
       {tmp.path(), "not a recording"},
       {tmp / "x.avi", "no such file"},

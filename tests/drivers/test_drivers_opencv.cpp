@@ -901,3 +901,40 @@ TEST_CASE("BoBoT video reader: a video shorter than its ground truth is an error
   CHECK(m == n);
   CHECK(s.skippedFrames() == 20 - n);
 }
+
+TEST_CASE(
+    "randomised scenes over the real stills: a still or the room behind, the target "
+    "in front of it in the first frame, textures cut from the real videos",
+    "[opencv][rand][shared]") {
+  const std::string data = test::sharedDataDir();
+  if (!test::pathExists(data + "/kinect-stills") || !test::pathExists(data + "/otb")) {
+    CUETRACK_SKIP("shared data absent (" << data << ")");
+  }
+  auto slot = std::make_unique<FrameSlot>();
+  int onStill = 0;
+  for (int seed = 1; seed <= 6; ++seed) {
+    const std::string spec = "rand:" + std::to_string(seed) + ":" + data;
+    INFO(spec);
+    RandomSceneReader r;
+    if (!r.open(spec.c_str())) FAIL(r.error());
+    const std::string name = r.name();
+    CHECK(name.rfind("rand-" + std::to_string(seed), 0) == 0);
+    const bool still =
+        name.find("-nyu") != std::string::npos || name.find("-tum") != std::string::npos;
+    onStill += still;
+    REQUIRE(r.next(*slot) == ReadStatus::Ok);
+    CHECK(r.frameCount() == 150);
+    CHECK(r.scene()->truth().visibleFraction() > 0.5f);
+    // The target's own pixels read its depth, in front of the still.
+    const Box& g = slot->groundTruth;
+    REQUIRE_FALSE(g.empty());
+    const uint16_t d =
+        slot->depthMm.data()[static_cast<int>(g.y + g.h / 2) * slot->depthMm.width() +
+                             static_cast<int>(g.x + g.w / 2)];
+    CHECK((d == 0 || std::fabs(d - r.scene()->truth().centreMm[2]) < 400.f));
+  }
+  CHECK(onStill >= 3);  // 7 stills and the room: most draws are over a still
+  RandomSceneReader bad;
+  CHECK_FALSE(bad.open(("rand:1:" + data + "/otb").c_str()));
+  CHECK(std::string(bad.error()).find("has no kinect-stills/ and otb/") != std::string::npos);
+}

@@ -48,8 +48,10 @@ TEST_CASE("drawScene: the same seed, the same scene; another seed, another", "[s
   CHECK(std::memcmp(&a.spec.objects[0].motion, &c.spec.objects[0].motion, sizeof(MotionSpec)) != 0);
 }
 
-TEST_CASE("drawScene: targets seen at the start, sized and moving as in the real videos, "
-          "every kind of event among the development seeds", "[synth][draw]") {
+TEST_CASE(
+    "drawScene: targets seen at the start, sized and moving as in the real videos, "
+    "every kind of event among the development seeds",
+    "[synth][draw]") {
   auto slot = std::make_unique<FrameSlot>();
   int twins = 0, occluders = 0, others = 0, spins = 0, boxes = 0, cylinders = 0;
   int approaching = 0, lit = 0, holes = 0, noDepth = 0, fast = 0, slow = 0;
@@ -189,7 +191,9 @@ TEST_CASE("drawn scenes are the same bytes on x86, aarch64 and armhf", "[synth][
     int frame;
     uint64_t hash;
   };
-  const Golden golden[] = {{3, 0, 0x6741a67755af4f9aull}, {3, 90, 0x344e374fdacdc3c9ull}, {11, 60, 0x13187c5f8ed66832ull}};
+  const Golden golden[] = {{3, 0, 0x6741a67755af4f9aull},
+                           {3, 90, 0x344e374fdacdc3c9ull},
+                           {11, 60, 0x13187c5f8ed66832ull}};
   auto slot = std::make_unique<FrameSlot>();
   for (const Golden& g : golden) {
     SceneDraw d;

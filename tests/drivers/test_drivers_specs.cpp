@@ -1,4 +1,4 @@
-// The pan: and still: source specs, parsed without OpenCV: good specs give the values the
+// The pan:, still: and rand: source specs, parsed without OpenCV: good specs give the values the
 // readers use; a bad one gives one line naming the spec and what is wrong with it.
 #include <catch2/catch.hpp>
 
@@ -144,4 +144,23 @@ TEST_CASE("still label: the dataset folder and the image's stem", "[specs]") {
   CHECK(stillLabel("data/tum/color/1.png") == "tum-1");
   CHECK(stillLabel("stills/a.png") == "stills-a");
   CHECK(stillLabel("a.png") == "a");
+}
+
+TEST_CASE("rand: spec, the seed and the data folder", "[specs]") {
+  RandomSpec r;
+  char err[256] = "";
+  REQUIRE(parseRandomSpec("rand:17", &r, err, sizeof err));
+  CHECK(r.seed == 17);
+  CHECK(r.dataDir.empty());
+  REQUIRE(parseRandomSpec("rand:3:/data/with:colon", &r, err, sizeof err));
+  CHECK(r.seed == 3);
+  CHECK(r.dataDir == "/data/with:colon");
+  for (const char* bad :
+       {"rand:", "rand:x", "rand:-1", "rand:1.5", "rand:99999999999999999999", "rand:4:"}) {
+    INFO(bad);
+    CHECK_FALSE(parseRandomSpec(bad, &r, err, sizeof err));
+    const std::string e = err;
+    CHECK(e.rfind(std::string(bad) + ": ", 0) == 0);
+    CHECK(has(e, "rand:SEED[:DATA]"));
+  }
 }

@@ -73,8 +73,10 @@ std::unique_ptr<FrameSource> openRandom(const char* spec, const SourceOptions& o
     }
     return r;
 #else
-    std::snprintf(err, errLen, "%s: real stills and textures need a host build with OpenCV "
-                  "(rand:%llu alone draws the generated room)", spec, p.seed);
+    std::snprintf(err, errLen,
+                  "%s: real stills and textures need a host build with OpenCV "
+                  "(rand:%llu alone draws the generated room)",
+                  spec, p.seed);
     return nullptr;
 #endif
   }

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <opencv2/imgproc.hpp>
 #include <string>
 #include <vector>
@@ -74,8 +74,10 @@ bool realTile(const std::vector<std::string>& videos, uint32_t draw, Rgb8* tile,
     float b[4];
     char why[160];
     if (rec::blankLine(line, len) || !rec::parseOtbLine(line, len, b, why, sizeof why)) continue;
-    if (b[2] >= 8.f && b[3] >= 8.f) boxes.push_back({b[0], b[1], b[2], b[3]});
-    else boxes.push_back({0.f, 0.f, 0.f, 0.f});
+    if (b[2] >= 8.f && b[3] >= 8.f)
+      boxes.push_back({b[0], b[1], b[2], b[3]});
+    else
+      boxes.push_back({0.f, 0.f, 0.f, 0.f});
   }
   if (boxes.empty()) {
     std::snprintf(err, errLen, "%s: no box to cut a texture from", gtPath.c_str());
@@ -137,8 +139,9 @@ bool RandomSceneReader::open(const char* spec, const SourceOptions& opt) {
   if (!p.dataDir.empty()) {
     const std::string stills = p.dataDir + "/kinect-stills", otb = p.dataDir + "/otb";
     if (!rec::isDirectory(stills.c_str()) || !rec::isDirectory(otb.c_str())) {
-      std::snprintf(_error, sizeof _error, "%s: %s has no kinect-stills/ and otb/ (the shared data)",
-                    spec, p.dataDir.c_str());
+      std::snprintf(_error, sizeof _error,
+                    "%s: %s has no kinect-stills/ and otb/ (the shared data)", spec,
+                    p.dataDir.c_str());
       return false;
     }
     for (int i = 0; i < kNumStills; ++i) {
@@ -181,8 +184,8 @@ bool RandomSceneReader::open(const char* spec, const SourceOptions& opt) {
     _scene.reset();
     return false;
   }
-  if (d.still >= 0) _scene->setBackdrop(_data->rgb.data(), _data->depth[d.still].data(),
-                                        kStills[d.still].k);
+  if (d.still >= 0)
+    _scene->setBackdrop(_data->rgb.data(), _data->depth[d.still].data(), kStills[d.still].k);
   Rgb8 tile[kTextureSize * kTextureSize];
   for (int i = 0; i < s.numObjects; ++i) {
     if (!d.realTexture[i]) continue;

@@ -23,10 +23,10 @@ using synth::splitmix64;
 // The draw's constants, in one place.
 constexpr int kFrames = 150;  // 5 s at 30 fps, like the hand-made scenes
 constexpr float kFps = 30.f;
-constexpr float kSizeMinPx = 18.f, kSizeMaxPx = 168.f;  // OTB p10-p90 of sqrt(w h)
+constexpr float kSizeMinPx = 18.f, kSizeMaxPx = 168.f;   // OTB p10-p90 of sqrt(w h)
 constexpr float kAspectMin = 0.39f, kAspectMax = 1.17f;  // OTB p10-p90 of w / h
 constexpr float kSpeedMinPx = 0.5f, kSpeedMaxPx = 18.f;  // OTB p10-p90 px a frame
-constexpr float kMaxDriftPx = 1.5f;  // 35 % of 640 px over the 150 frames
+constexpr float kMaxDriftPx = 1.5f;                      // 35 % of 640 px over the 150 frames
 constexpr float kNearMm = 800.f, kFarMm = 4000.f;        // Kinect working range
 constexpr float kMinObjectMm = 650.f;                    // nothing nearer (Kinect minimum)
 
@@ -76,7 +76,9 @@ struct Rng {
   uint8_t byte() { return static_cast<uint8_t>(splitmix64(s) >> 56); }
 };
 
-Rgb8 randomColour(Rng& r) { return {r.byte(), r.byte(), r.byte()}; }
+Rgb8 randomColour(Rng& r) {
+  return {r.byte(), r.byte(), r.byte()};
+}
 
 // A procedural texture: mostly patches (rich), some stripes or checks, some flat (nothing
 // for appearance to hold on to); one tile spans 0.5-2 object widths.
@@ -181,11 +183,11 @@ void drawScene(uint64_t seed, const StillView* stills, int numStills, bool realT
     const StillView& st = stills[pick];
     for (int tries = 0; tries < 64 && !placed; ++tries) {
       const float u = r.uniform(0.2f, 0.8f) * st.width, v = r.uniform(0.3f, 0.8f) * st.height;
-      const uint16_t surf = stillDepthNear(st.depthMm, st.width, st.height, static_cast<int>(u),
-                                           static_cast<int>(v));
+      const uint16_t surf =
+          stillDepthNear(st.depthMm, st.width, st.height, static_cast<int>(u), static_cast<int>(v));
       // The centre stands its half width further in: z + half width = surface - gap.
-      const float z = (static_cast<float>(surf) - r.uniform(100.f, 700.f)) /
-                      (1.f + halfWidthPx / st.k.fx);
+      const float z =
+          (static_cast<float>(surf) - r.uniform(100.f, 700.f)) / (1.f + halfWidthPx / st.k.fx);
       if (surf == 0 || z < kNearMm + 200.f || z > kFarMm) continue;
       int hidden = 0;
       for (int gy = -1; gy <= 1; ++gy)
@@ -331,10 +333,9 @@ void drawScene(uint64_t seed, const StillView* stills, int numStills, bool realT
     twin.heightMm *= scale;
     float zTwin = z0 + r.sign() * r.uniform(300.f, 1500.f);
     if (zTwin < kNearMm) zTwin = z0 + (z0 - zTwin);
-    twin.motion = crossing(m, k, r.uniform(0.25f, 0.75f) * durationS, zTwin,
-                           r.logUniform(1.f, 12.f), r.sign(),
-                           r.uniform(-0.4f, 0.4f) * targetHeightPx,
-                           0.5f * targetWidthPx * (1.f + scale * z0 / zTwin));
+    twin.motion = crossing(
+        m, k, r.uniform(0.25f, 0.75f) * durationS, zTwin, r.logUniform(1.f, 12.f), r.sign(),
+        r.uniform(-0.4f, 0.4f) * targetHeightPx, 0.5f * targetWidthPx * (1.f + scale * z0 / zTwin));
     twin.yawRateRadPerS = 0.f;
     twin.yawAmplitudeRad = 0.f;
     s.objects[s.numObjects] = twin;
@@ -357,10 +358,9 @@ void drawScene(uint64_t seed, const StillView* stills, int numStills, bool realT
       occ.heightMm = targetHeightPx * r.uniform(1.2f, 3.f) * zOcc / k.fy;
       occ.texture = randomTexture(r, occ.radiusMm * 2.f);
       const float frames = r.uniform(10.f, 50.f);
-      occ.motion = crossing(m, k, r.uniform(0.2f, 0.8f) * durationS, zOcc,
-                            (occWidthPx + targetWidthPx) / frames, r.sign(),
-                            r.uniform(-0.3f, 0.3f) * targetHeightPx,
-                            0.5f * (occWidthPx + targetWidthPx));
+      occ.motion = crossing(
+          m, k, r.uniform(0.2f, 0.8f) * durationS, zOcc, (occWidthPx + targetWidthPx) / frames,
+          r.sign(), r.uniform(-0.3f, 0.3f) * targetHeightPx, 0.5f * (occWidthPx + targetWidthPx));
       s.objects[s.numObjects] = occ;
       d.realTexture[s.numObjects] = realTextures && r.chance(0.5f);
       d.textureDraw[s.numObjects] = r.bits();

@@ -5,6 +5,7 @@
 //   OtbFolder.hpp      OTB folder: img/, groundtruth_rect.txt
 //   StillPan.hpp       pan: a real RGB-D still, panned
 //   StillScene.hpp     still: a synthetic scene's objects in a real RGB-D still
+//   RandomScene.hpp    rand:SEED:DATA a drawn scene over the real stills
 //   ImageLoaders.hpp   whole stills (colour, 16-bit depth) for the last two and the tests
 // No OpenCV type appears in them: decoders live in the .cpp files.
 #pragma once
@@ -12,6 +13,7 @@
 #include "cuetrack/drivers/BobotVideo.hpp"
 #include "cuetrack/drivers/ImageLoaders.hpp"
 #include "cuetrack/drivers/OtbFolder.hpp"
+#include "cuetrack/drivers/RandomScene.hpp"
 #include "cuetrack/drivers/RgbdFolder.hpp"
 #include "cuetrack/drivers/StillPan.hpp"
 #include "cuetrack/drivers/StillScene.hpp"

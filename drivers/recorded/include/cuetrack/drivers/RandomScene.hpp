@@ -1,7 +1,8 @@
 // The randomised synthetic RGB-D scenes over real data (host only, cuetrack_recorded_cv):
 // drawScene (drivers/synth) with the real Kinect stills of DATA/kinect-stills offered as
 // backdrops and textures cut from the development videos of DATA/otb (the ground-truth
-// box of a drawn frame: a real object's look). Spec (openFrameSource; parsed by rec::parseRandomSpec):
+// box of a drawn frame: a real object's look). Spec (openFrameSource; parsed by
+// rec::parseRandomSpec):
 //   rand:SEED:DATA   DATA is the shared data folder (../shared/data)
 //   rand:SEED        (no DATA; any build) the generated room and procedural textures
 // SEED draws the scene; SourceOptions::seed draws the sensor noise, as for synth:.
