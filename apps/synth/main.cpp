@@ -28,7 +28,7 @@ const char* kAbout =
     "otb (img/*.jpg + groundtruth_rect.txt) and avi (MJPG video + .gt.txt, --out is\n"
     "the .avi path) are colour only, for the RGB benchmarks' formats (need OpenCV).\n"
     "A scene is a named one below, or rand:SEED[:DATA], one drawn from SEED out of the\n"
-    "randomised scenes (docs/synthetic.md); DATA, the shared data folder, adds real\n"
+    "randomised scenes (docs/recordings.md); DATA, the shared data folder, adds real\n"
     "Kinect stills as backdrops and textures cut from real videos (needs OpenCV).\n"
     "  cuetrack-synth --scene NAME --out DIR [--format fakenect|rgbd|otb|avi]\n"
     "                 [--frames N] [--seed S] [--size WxH] [--force]\n"

@@ -28,8 +28,10 @@ bool checkOutputs(const AppOptions& opt, char* err, size_t errLen) {
   platform::NamedPath inputs[kMaxInputs];
   int nIn = 0;
   const char* spec = opt.source;
+  // Generated scenes (synth:, rand:: the shared data it reads is never written) and
+  // cameras have no input path an output could clash with.
   if (spec && std::strncmp(spec, "kinect", 6) != 0 && std::strncmp(spec, "synth", 5) != 0 &&
-      !isCameraSpec(spec)) {
+      std::strncmp(spec, "rand:", 5) != 0 && !isCameraSpec(spec)) {
     const bool still = std::strncmp(spec, "still:", 6) == 0;
     if (still || std::strncmp(spec, "pan:", 4) == 0) {
       // pan:RGB,DEPTH,... / still:RGB,DEPTH,...:SCENE@...: the files named, before any ':'.

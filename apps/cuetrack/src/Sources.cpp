@@ -142,7 +142,7 @@ void describeGroundTruth(const char* spec, char* out, size_t outLen) {
   if (!spec && gDefaultSpec[0] != '\0') spec = gDefaultSpec;  // the default chose a camera
   if (!spec || std::strncmp(spec, "kinect", 6) == 0 || std::strncmp(spec, "synth", 5) == 0 ||
       std::strncmp(spec, "pan:", 4) == 0 || std::strncmp(spec, "still:", 6) == 0 ||
-      isCameraSpec(spec)) {
+      std::strncmp(spec, "rand:", 5) == 0 || isCameraSpec(spec)) {
     if (spec) {
       std::snprintf(out, outLen, "%s ground truth", spec);
     } else {

@@ -1,6 +1,6 @@
 // drawScene: one synthetic RGB-D scene from a seed. Every range below is named with where
 // it comes from: "OTB" ranges were measured on the development set's 24 real videos
-// (scripts' statistics in docs/synthetic.md: target size sqrt(w h) p10-p90 18-168 px at
+// (docs/recordings.md, "Randomised scenes": target size sqrt(w h) p10-p90 18-168 px at
 // 640 px wide, per-frame speed p10-p90 0.5-18 px, aspect w/h p10-p90 0.39-1.17, a median
 // scale change of 0.7 % a frame); "Kinect" ranges are what a robot's Kinect v1 sees
 // (0.8-4 m working range, objects on or above a floor 0.5-1.3 m below the camera).

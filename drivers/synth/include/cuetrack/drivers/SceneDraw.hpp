@@ -4,7 +4,7 @@
 // each by chance, a look-alike twin at another depth crossing it, an occluder passing in
 // front, another object, lighting changes and Kinect depth holes. The ranges are set
 // from the development set's real videos and from what a robot's Kinect sees, before any
-// tracker was measured on them (docs/synthetic.md, "Randomised scenes"); they are not to
+// tracker was measured on them (docs/recordings.md, "Randomised scenes"); they are not to
 // be changed to suit the tracker.
 //
 //   SceneDraw d;
