@@ -239,7 +239,10 @@ void drawScene(uint64_t seed, const StillView* stills, int numStills, bool realT
   if (r.chance(0.35f)) {
     d.spin = true;
     if (r.chance(0.5f)) {
-      t.yawRateRadPerS = r.sign() * r.uniform(0.4f, 2.f);
+      // Each draw its own statement: the order of a call's arguments or an operator's
+      // operands is unspecified, and differs between compilers' targets.
+      const float sign = r.sign();
+      t.yawRateRadPerS = sign * r.uniform(0.4f, 2.f);
     } else {
       t.yawAmplitudeRad = r.uniform(0.4f, 1.2f);
       t.yawPeriodS = r.uniform(2.f, 6.f);
@@ -331,11 +334,15 @@ void drawScene(uint64_t seed, const StillView* stills, int numStills, bool realT
     twin.radiusMm *= scale;
     twin.halfDepthMm *= scale;
     twin.heightMm *= scale;
-    float zTwin = z0 + r.sign() * r.uniform(300.f, 1500.f);
+    const float side = r.sign();
+    float zTwin = z0 + side * r.uniform(300.f, 1500.f);
     if (zTwin < kNearMm) zTwin = z0 + (z0 - zTwin);
-    twin.motion = crossing(
-        m, k, r.uniform(0.25f, 0.75f) * durationS, zTwin, r.logUniform(1.f, 12.f), r.sign(),
-        r.uniform(-0.4f, 0.4f) * targetHeightPx, 0.5f * targetWidthPx * (1.f + scale * z0 / zTwin));
+    const float dvPx = r.uniform(-0.4f, 0.4f) * targetHeightPx;
+    const float dir = r.sign();
+    const float twinSpeedPx = r.logUniform(1.f, 12.f);
+    const float tcS = r.uniform(0.25f, 0.75f) * durationS;
+    twin.motion = crossing(m, k, tcS, zTwin, twinSpeedPx, dir, dvPx,
+                           0.5f * targetWidthPx * (1.f + scale * z0 / zTwin));
     twin.yawRateRadPerS = 0.f;
     twin.yawAmplitudeRad = 0.f;
     s.objects[s.numObjects] = twin;
@@ -358,9 +365,11 @@ void drawScene(uint64_t seed, const StillView* stills, int numStills, bool realT
       occ.heightMm = targetHeightPx * r.uniform(1.2f, 3.f) * zOcc / k.fy;
       occ.texture = randomTexture(r, occ.radiusMm * 2.f);
       const float frames = r.uniform(10.f, 50.f);
-      occ.motion = crossing(
-          m, k, r.uniform(0.2f, 0.8f) * durationS, zOcc, (occWidthPx + targetWidthPx) / frames,
-          r.sign(), r.uniform(-0.3f, 0.3f) * targetHeightPx, 0.5f * (occWidthPx + targetWidthPx));
+      const float dvPx = r.uniform(-0.3f, 0.3f) * targetHeightPx;
+      const float dir = r.sign();
+      const float tcS = r.uniform(0.2f, 0.8f) * durationS;
+      occ.motion = crossing(m, k, tcS, zOcc, (occWidthPx + targetWidthPx) / frames, dir, dvPx,
+                            0.5f * (occWidthPx + targetWidthPx));
       s.objects[s.numObjects] = occ;
       d.realTexture[s.numObjects] = realTextures && r.chance(0.5f);
       d.textureDraw[s.numObjects] = r.bits();
@@ -378,7 +387,9 @@ void drawScene(uint64_t seed, const StillView* stills, int numStills, bool realT
     o.halfDepthMm = o.radiusMm;
     o.heightMm = sizeMm * r.uniform(0.6f, 1.8f);
     o.texture = randomTexture(r, 2.f * o.radiusMm);
-    unproject(k, r.uniform(0.1f, 0.9f) * w, r.uniform(0.25f, 0.8f) * h, z, o.motion.startMm);
+    const float vPx = r.uniform(0.25f, 0.8f) * h;
+    const float uPx = r.uniform(0.1f, 0.9f) * w;
+    unproject(k, uPx, vPx, z, o.motion.startMm);
     o.motion.amplitudeMm[0] = r.uniform(0.f, 400.f);
     o.motion.periodS[0] = r.uniform(2.f, 8.f);
     o.motion.phaseRad[0] = r.uniform(0.f, 2.f * kPi);
