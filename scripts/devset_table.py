@@ -6,8 +6,8 @@ entries, the last column is the first minus the second, '*' where the difference
 larger than the spread of either (the team's rule for a change: docs/algorithm.md).
 Each --group LABEL:FIRST:COUNT prints first a line with the average over those sequences
 (the real videos: the figure that counts; the randomised RGB-D group), each tracker's
-overlap with its seed spread and hit rate; --real N is --group "real videos:0:N".
-Usage: devset_table.py [--group LABEL:FIRST:COUNT ...] [--real N] DEVSET.json [OUT.md]"""
+overlap with its seed spread and hit rate.
+Usage: devset_table.py [--group LABEL:FIRST:COUNT ...] DEVSET.json [OUT.md]"""
 import json
 import statistics
 import sys
@@ -40,12 +40,9 @@ def group_line(entries, labels, name, first, n):
 
 def main():
     groups = []
-    while len(sys.argv) > 2 and sys.argv[1] in ("--real", "--group"):
-        if sys.argv[1] == "--real":
-            groups.append(("real videos", 0, int(sys.argv[2])))
-        else:
-            name, first, n = sys.argv[2].rsplit(":", 2)
-            groups.append((name, int(first), int(n)))
+    while len(sys.argv) > 2 and sys.argv[1] == "--group":
+        name, first, n = sys.argv[2].rsplit(":", 2)
+        groups.append((name, int(first), int(n)))
         del sys.argv[1:3]
     entries = json.load(open(sys.argv[1]))
     if isinstance(entries, dict):

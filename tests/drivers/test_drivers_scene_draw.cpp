@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "FrameHash.hpp"
 #include "cuetrack/drivers/SceneDraw.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 
@@ -17,21 +18,6 @@ using namespace cuetrack;
 namespace {
 
 constexpr int kDevSeeds = 50;  // rand:1..50 in scripts/devset.sh
-
-uint64_t fnv(const FrameSlot& f) {
-  uint64_t h = 1469598103934665603ull;
-  auto add = [&h](const void* p, size_t n) {
-    const uint8_t* b = static_cast<const uint8_t*>(p);
-    for (size_t i = 0; i < n; ++i) {
-      h ^= b[i];
-      h *= 1099511628211ull;
-    }
-  };
-  const size_t n = static_cast<size_t>(f.rgb.width()) * static_cast<size_t>(f.rgb.height());
-  add(f.rgb.data(), n * 3);
-  add(f.depthMm.data(), n * 2);
-  return h;
-}
 
 }  // namespace
 
@@ -200,7 +186,7 @@ TEST_CASE("drawn scenes are the same bytes on x86, aarch64 and armhf", "[synth][
     drawScene(g.seed, nullptr, 0, false, &d);
     auto src = std::make_unique<SyntheticSource>(d.spec, 42);
     REQUIRE(src->render(g.frame, *slot));
-    const uint64_t h = fnv(*slot);
+    const uint64_t h = test::frameHash(*slot);
     INFO("rand:" << g.seed << " frame " << g.frame << " hash 0x" << std::hex << h);
     CHECK(h == g.hash);
   }

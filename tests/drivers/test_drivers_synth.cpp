@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "AllocCounter.hpp"
+#include "FrameHash.hpp"
 #include "cuetrack/drivers/KinectDepth.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 
@@ -725,16 +726,7 @@ TEST_CASE("synthetic frames are the same bytes on x86, aarch64 and armhf", "[syn
   for (const Golden& g : golden) {
     auto src = std::make_unique<SyntheticSource>(scene(g.scene, 150), 42);
     REQUIRE(src->render(g.frame, *slot));
-    uint64_t h = 1469598103934665603ull;
-    auto fnv = [&h](const void* p, size_t n) {
-      const uint8_t* b = static_cast<const uint8_t*>(p);
-      for (size_t i = 0; i < n; ++i) {
-        h ^= b[i];
-        h *= 1099511628211ull;
-      }
-    };
-    fnv(slot->rgb.data(), 640 * 480 * 3);
-    fnv(slot->depthMm.data(), 640 * 480 * 2);
+    const uint64_t h = test::frameHash(*slot);
     INFO(g.scene << " frame " << g.frame << " hash 0x" << std::hex << h);
     CHECK(h == g.hash);
   }

@@ -1,5 +1,6 @@
 #include "cuetrack/drivers/ImageLoaders.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <opencv2/imgproc.hpp>
@@ -48,7 +49,7 @@ void copyColourFit(const cv::Mat& src, CvImages& scratch, FrameSlot& out) {
 }
 
 bool loadDepthPng16(const char* path, FixedImage<uint16_t, kMaxImageWidth, kMaxImageHeight>& out,
-                    char* err, size_t errLen) {
+                    char* err, size_t errLen, float mmPerUnit) {
   const cv::Mat m = cv::imread(path, cv::IMREAD_UNCHANGED);  // a colour PNG stays colour
   if (m.empty()) {
     std::snprintf(err, errLen, "%s: cannot decode image", path);
@@ -66,6 +67,13 @@ bool loadDepthPng16(const char* path, FixedImage<uint16_t, kMaxImageWidth, kMaxI
   }
   for (int y = 0; y < m.rows; ++y)
     std::memcpy(out.data() + y * m.cols, m.ptr(y), static_cast<size_t>(m.cols) * 2);
+  if (mmPerUnit != 1.f) {
+    uint16_t* d = out.data();
+    for (int i = 0; i < m.cols * m.rows; ++i) {
+      const long mm = std::lround(static_cast<double>(d[i]) * mmPerUnit);
+      d[i] = static_cast<uint16_t>(mm > 65535 ? 65535 : mm);
+    }
+  }
   return true;
 }
 

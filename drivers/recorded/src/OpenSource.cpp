@@ -26,6 +26,18 @@ namespace cuetrack {
 
 namespace {
 
+// A generated scene, cut to opt.maxFrames; nullptr with its error in err.
+std::unique_ptr<FrameSource> sceneSource(SceneSpec s, const SourceOptions& opt, char* err,
+                                         size_t errLen) {
+  if (opt.maxFrames >= 0 && opt.maxFrames < s.frameCount) s.frameCount = opt.maxFrames;
+  auto src = std::make_unique<SyntheticSource>(s, opt.seed);
+  if (src->error()[0]) {
+    std::snprintf(err, errLen, "%s", src->error());
+    return nullptr;
+  }
+  return src;
+}
+
 std::unique_ptr<FrameSource> openSynth(const std::string& spec, const SourceOptions& opt, char* err,
                                        size_t errLen) {
   // synth:<scene>[:frames]
@@ -49,13 +61,7 @@ std::unique_ptr<FrameSource> openSynth(const std::string& spec, const SourceOpti
     return nullptr;
   }
   if (frames > 0) s.frameCount = frames;
-  if (opt.maxFrames >= 0 && opt.maxFrames < s.frameCount) s.frameCount = opt.maxFrames;
-  auto src = std::make_unique<SyntheticSource>(s, opt.seed);
-  if (src->error()[0]) {
-    std::snprintf(err, errLen, "%s", src->error());
-    return nullptr;
-  }
-  return src;
+  return sceneSource(s, opt, err, errLen);
 }
 
 // rand:SEED: the drawn scene in the generated room, any build; rand:SEED:DATA over the
@@ -82,13 +88,7 @@ std::unique_ptr<FrameSource> openRandom(const char* spec, const SourceOptions& o
   }
   SceneDraw d;
   drawScene(p.seed, nullptr, 0, false, &d);
-  if (opt.maxFrames >= 0 && opt.maxFrames < d.spec.frameCount) d.spec.frameCount = opt.maxFrames;
-  auto src = std::make_unique<SyntheticSource>(d.spec, opt.seed);
-  if (src->error()[0]) {
-    std::snprintf(err, errLen, "%s", src->error());
-    return nullptr;
-  }
-  return src;
+  return sceneSource(d.spec, opt, err, errLen);
 }
 
 template <typename Reader>

@@ -120,14 +120,6 @@ struct RandomSceneReader::Data {
 RandomSceneReader::RandomSceneReader() : _data(new Data) {}
 RandomSceneReader::~RandomSceneReader() = default;
 
-int RandomSceneReader::frameCount() const {
-  return _scene ? _scene->frameCount() : -1;
-}
-
-double RandomSceneReader::nominalFps() const {
-  return _scene ? _scene->nominalFps() : 0.0;
-}
-
 bool RandomSceneReader::open(const char* spec, const SourceOptions& opt) {
   _error[0] = '\0';
   _scene.reset();
@@ -147,11 +139,8 @@ bool RandomSceneReader::open(const char* spec, const SourceOptions& opt) {
     for (int i = 0; i < kNumStills; ++i) {
       const std::string path = stills + "/" + kStills[i].depth;
       Depth& d = _data->depth[i];
-      if (!loadDepthPng16(path.c_str(), d, _error, sizeof _error)) return false;
-      if (kStills[i].mmPerUnit != 1.f)
-        for (int j = 0; j < d.width() * d.height(); ++j)
-          d.data()[j] = static_cast<uint16_t>(
-              std::lround(static_cast<double>(d.data()[j]) * kStills[i].mmPerUnit));
+      if (!loadDepthPng16(path.c_str(), d, _error, sizeof _error, kStills[i].mmPerUnit))
+        return false;
       views[i] = {d.data(), d.width(), d.height(), kStills[i].k};
     }
     numStills = kNumStills;
@@ -177,13 +166,7 @@ bool RandomSceneReader::open(const char* spec, const SourceOptions& opt) {
       return false;
     }
   }
-  std::snprintf(s.name, sizeof s.name, "%s", _name.c_str());
-  _scene = std::make_unique<SyntheticSource>(s, opt.seed);
-  if (_scene->error()[0]) {
-    std::snprintf(_error, sizeof _error, "%s: %s", spec, _scene->error());
-    _scene.reset();
-    return false;
-  }
+  if (!start(s, opt.seed, spec)) return false;
   if (d.still >= 0)
     _scene->setBackdrop(_data->rgb.data(), _data->depth[d.still].data(), kStills[d.still].k);
   Rgb8 tile[kTextureSize * kTextureSize];
@@ -196,16 +179,6 @@ bool RandomSceneReader::open(const char* spec, const SourceOptions& opt) {
     _scene->setObjectTexture(i, tile);
   }
   return true;
-}
-
-ReadStatus RandomSceneReader::next(FrameSlot& out) {
-  if (!_scene) {
-    std::snprintf(_error, sizeof _error, "rand: scene not open");
-    return ReadStatus::Error;
-  }
-  const ReadStatus r = _scene->next(out);
-  if (r == ReadStatus::Error) std::snprintf(_error, sizeof _error, "%s", _scene->error());
-  return r;
 }
 
 }  // namespace cuetrack

@@ -18,14 +18,6 @@ struct StillSceneReader::Still {
 StillSceneReader::StillSceneReader() : _still(new Still) {}
 StillSceneReader::~StillSceneReader() = default;
 
-int StillSceneReader::frameCount() const {
-  return _scene ? _scene->frameCount() : -1;
-}
-
-double StillSceneReader::nominalFps() const {
-  return _scene ? _scene->nominalFps() : 0.0;
-}
-
 bool StillSceneReader::open(const char* spec, const SourceOptions& opt) {
   _error[0] = '\0';
   _scene.reset();
@@ -38,7 +30,7 @@ bool StillSceneReader::open(const char* spec, const SourceOptions& opt) {
     return false;
   }
   if (!loadColourImage(p.rgbPath.c_str(), _still->rgb, _error, sizeof _error) ||
-      !loadDepthPng16(p.depthPath.c_str(), _still->depthMm, _error, sizeof _error))
+      !loadDepthPng16(p.depthPath.c_str(), _still->depthMm, _error, sizeof _error, p.mmPerUnit))
     return false;
   const int w = _still->rgb.width(), h = _still->rgb.height();
   if (w < 32 || h < 32) {
@@ -50,13 +42,6 @@ bool StillSceneReader::open(const char* spec, const SourceOptions& opt) {
     std::snprintf(_error, sizeof _error, "%s: depth %dx%d does not match colour %dx%d",
                   p.depthPath.c_str(), _still->depthMm.width(), _still->depthMm.height(), w, h);
     return false;
-  }
-  if (p.mmPerUnit != 1.f) {
-    uint16_t* d = _still->depthMm.data();
-    for (int i = 0; i < w * h; ++i) {
-      const long mm = std::lround(static_cast<double>(d[i]) * p.mmPerUnit);
-      d[i] = static_cast<uint16_t>(mm > 65535 ? 65535 : mm);
-    }
   }
   s.width = w;
   s.height = h;
@@ -72,25 +57,9 @@ bool StillSceneReader::open(const char* spec, const SourceOptions& opt) {
   char pixel[48];
   std::snprintf(pixel, sizeof pixel, "-%ld-%ld", std::lround(p.uPx), std::lround(p.vPx));
   _name = "still-" + rec::stillLabel(p.rgbPath) + "-" + p.scene + pixel;
-  std::snprintf(s.name, sizeof s.name, "%s", _name.c_str());
-  _scene = std::make_unique<SyntheticSource>(s, opt.seed);
-  if (_scene->error()[0]) {
-    std::snprintf(_error, sizeof _error, "%s: %s", spec, _scene->error());
-    _scene.reset();
-    return false;
-  }
+  if (!start(s, opt.seed, spec)) return false;
   _scene->setBackdrop(_still->rgb.data(), _still->depthMm.data(), p.intrinsics);
   return true;
-}
-
-ReadStatus StillSceneReader::next(FrameSlot& out) {
-  if (!_scene) {
-    std::snprintf(_error, sizeof _error, "still: scene not open");
-    return ReadStatus::Error;
-  }
-  const ReadStatus r = _scene->next(out);
-  if (r == ReadStatus::Error) std::snprintf(_error, sizeof _error, "%s", _scene->error());
-  return r;
 }
 
 }  // namespace cuetrack

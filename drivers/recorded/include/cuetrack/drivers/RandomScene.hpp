@@ -10,33 +10,21 @@
 #pragma once
 
 #include <memory>
-#include <string>
 
-#include "cuetrack/drivers/FrameSource.hpp"
+#include "cuetrack/drivers/SceneReader.hpp"
 #include "cuetrack/drivers/SourceOptions.hpp"
 
 namespace cuetrack {
 
-class SyntheticSource;
-
-class RandomSceneReader final : public FrameSource {
+class RandomSceneReader final : public SceneReader {
  public:
   RandomSceneReader();
   ~RandomSceneReader() override;
   bool open(const char* spec, const SourceOptions& opt = {});
-  ReadStatus next(FrameSlot& out) override;
-  const char* error() const override { return _error; }
-  const char* name() const override { return _name.c_str(); }
-  int frameCount() const override;
-  double nominalFps() const override;
-  const SyntheticSource* scene() const { return _scene.get(); }
 
  private:
   struct Data;
   std::unique_ptr<Data> _data;  // the chosen still's colour and every still's depth
-  std::unique_ptr<SyntheticSource> _scene;
-  std::string _name;
-  char _error[768] = "";
 };
 
 }  // namespace cuetrack

@@ -17,34 +17,21 @@
 #pragma once
 
 #include <memory>
-#include <string>
 
-#include "cuetrack/drivers/FrameSource.hpp"
+#include "cuetrack/drivers/SceneReader.hpp"
 #include "cuetrack/drivers/SourceOptions.hpp"
 
 namespace cuetrack {
 
-class SyntheticSource;
-
-class StillSceneReader final : public FrameSource {
+class StillSceneReader final : public SceneReader {
  public:
   StillSceneReader();
   ~StillSceneReader() override;
   bool open(const char* spec, const SourceOptions& opt = {});
-  ReadStatus next(FrameSlot& out) override;
-  const char* error() const override { return _error; }
-  const char* name() const override { return _name.c_str(); }
-  int frameCount() const override;
-  double nominalFps() const override;
-  // The scene rendered (truth() for the last frame); nullptr before a successful open().
-  const SyntheticSource* scene() const { return _scene.get(); }
 
  private:
   struct Still;
   std::unique_ptr<Still> _still;  // colour and depth, ~1.5 MiB, read once
-  std::unique_ptr<SyntheticSource> _scene;
-  std::string _name;
-  char _error[768] = "";
 };
 
 }  // namespace cuetrack
