@@ -18,7 +18,7 @@ Tracker& sharedTracker() {
 // best-nolost (no lost detection / re-acquisition), best-fixedsize (fixed cylinder),
 // best-nofastmotion (no jumping particles, no coasting over dropped frames),
 // best-nocorrelation (no template cue), best-noocclusion (learns covered frames too),
-// best-template (in 2D the gray template as the correlation cue, not the correlation
+// best-template (the gray template as the correlation cue, in 2D and 3D, not the correlation
 // filter), 1.1-centrednegatives (2D near negatives centred on the estimate).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {

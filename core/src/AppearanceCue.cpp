@@ -2,12 +2,14 @@
 
 namespace cuetrack {
 
-void AppearanceCue::start(bool enabled, bool filterWanted, bool is3d, const RgbView& rgb,
+void AppearanceCue::start(bool enabled, bool filterWanted, bool templateJudges, const RgbView& rgb,
                           const FrameTables& t, const Box& win) {
   _enabled = enabled;
-  _filter = enabled && filterWanted && !is3d;
+  _filter = enabled && filterWanted;
+  _template = enabled && (!_filter || templateJudges);
+  _lastTemplate = !_filter;
   if (_filter) _dcf.reset(rgb, win);
-  if (_enabled && !_filter) _corr.reset(t, win);
+  if (_template) _corr.reset(t, win);
 }
 
 }  // namespace cuetrack

@@ -9,6 +9,7 @@ bool MissRule::miss(const Inputs& in, const DepthGuard& guard) {
               PeakContrast::flat(in.contrast);
   // The target may have moved in depth while hidden, but not so far.
   if (in.is3d && (in.wasLost || in.onProbation) && guard.implausibleFind(in.depthMm)) miss = true;
+  if (in.onProbation && in.unlikeTarget) miss = true;
   return miss;
 }
 

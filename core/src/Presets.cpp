@@ -53,7 +53,7 @@ TrackerConfig presetConfig(Preset preset) {
       c.lostDetection = true;
       c.fastMotion = true;
       c.correlationCue = true;
-      c.correlationFilter = true;  // in 2D
+      c.correlationFilter = true;
       c.occlusionGate = true;
       c.fallbackTo2d = true;
       c.numWeakClassifiers2d = 32;  // RGB only: as the paper's RGB tests (1.x)

@@ -104,6 +104,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _lost.reset();
   _lostFrames = 0;
   _reseeder.restartScan();
+  _peakLevel.reset();
 
   Particle q;
   if (_is3d) {
@@ -197,7 +198,7 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
     _boxes[i] = particleBox(q);
   }
   // The cue searches around the last estimate; lost, the whole image, a few tiles a frame.
-  const bool aroundLast = _cue.enabled() && !wasLost && _cue.ready();
+  const bool aroundLast = _cue.enabled() && !wasLost && _cue.trackingReady();
   const Box cueRegion = aroundLast ? _cue.region(_lastBox) : Box{};
   return SearchRegion::of(_boxes, n, aroundLast ? &cueRegion : nullptr, _cue.enabled() && wasLost,
                           _imageW, _imageH);
@@ -272,6 +273,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     in.onProbation = _lost.onProbation();
     in.depthMm = e.particle.p[2];
     in.contrast = e.contrast;
+    in.unlikeTarget = _is3d && _corrActive && _cue.isFilter() && _peakLevel.unlike(_cue.peak());
     miss = MissRule::miss(in, _depthGuard);
     e.miss = miss;
     _state = _lost.step(_state, miss ? 0.f : e.confidence);
@@ -288,14 +290,16 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
       e.box = particleBox(e.particle);
     _lastEstimate = e.particle;
     _hold.learnt(frame.timeUs, e.particle, _is3d && _config.occlusionGate);
+    if (_corrActive && _cue.isFilter()) _peakLevel.learnt(_cue.peak());  // on the target
     learn(clampToImage(e.box), roi);
     learned = true;
   } else if (_cue.isFilter() && !miss && !e.box.empty() && _state == TrackState::Tracking &&
-             !_lost.onProbation()) {
+             !_lost.onProbation() && !covered(frame, e.particle)) {
     // The filter follows the target on every frame it is tracked, not only on those fit
     // for the classifier: its negatives are the context itself, and a filter left behind
-    // by a turning or deforming target loses it (docs/algorithm.md).
-    _cue.learn(_rgb, _channels.tables(), clampToImage(e.box));
+    // by a turning or deforming target loses it (docs/algorithm.md). Not while a nearer
+    // surface covers it (3D): it would learn the occluder and follow it.
+    _cue.follow(_rgb, clampToImage(e.box));
   }
   // The depth the target was last confirmed at: learnt, or found again (it may have
   // moved in depth while hidden).
@@ -348,7 +352,7 @@ bool Tracker::searchCue(const Box& around, bool scales) {
 }
 
 void Tracker::correlate(float dtS) {
-  if (!searchCue(_lastBox, true)) return;
+  if (!searchCue(_lastBox, !_is3d)) return;  // in 3D the depth sets the scale
   _corrActive = true;
   // Some particles onto the peak, when there is one (the target may have jumped where the
   // cloud did not reach), moving on as it jumped.
@@ -364,14 +368,14 @@ void Tracker::correlate(float dtS) {
 void Tracker::scanLost(float dtS) {
   // While lost: the cue searched over the image, a few tiles a frame at the last learnt
   // size, the tiles' best peak (if strong enough) given particles to confirm.
-  if (!_cue.ready()) return;
+  if (!_cue.scanReady()) return;
   const Box last = particleBox(_lastEstimate);
   if (last.empty()) return;
   const Reseeder::Tiles tiles = Reseeder::tiles(last, _cue.scanStepSides(), _imageW, _imageH);
-  float best = _cue.minPeak();
+  float best = _cue.scanMinPeak();
   Box found{};
   for (int j = 0; j < Reseeder::kTilesPerFrame && j < tiles.count(); ++j) {
-    if (searchCue(_reseeder.nextTile(tiles), false) && _cue.peak() >= best) {
+    if (_cue.scan(_rgb, _channels.tables(), _reseeder.nextTile(tiles)) && _cue.peak() >= best) {
       best = _cue.peak();
       found = _cue.peakBox();
     }

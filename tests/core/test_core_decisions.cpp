@@ -12,6 +12,7 @@
 #include "cuetrack/core/Gate.hpp"
 #include "cuetrack/core/MissRule.hpp"
 #include "cuetrack/core/OcclusionHold.hpp"
+#include "cuetrack/core/PeakLevel.hpp"
 #include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/SearchRegion.hpp"
 #include "cuetrack/core/SpaceChoice.hpp"
@@ -95,6 +96,35 @@ TEST_CASE("MissRule: found again, only an implausible depth is a miss", "[core][
   CHECK(MissRule::miss(in, g));
   in.depthMm = 2400.f;
   CHECK_FALSE(MissRule::miss(in, g));
+}
+
+TEST_CASE("MissRule: on probation, a find unlike the target is a miss", "[core][missrule]") {
+  DepthGuard g;
+  g.reset(2000.f);
+  MissRule::Inputs in = tracked3d(2000.f, 1.f);
+  in.unlikeTarget = true;
+  CHECK_FALSE(MissRule::miss(in, g));  // tracking: the filter's peak dips on a turning target
+  in.onProbation = true;
+  CHECK(MissRule::miss(in, g));
+  in.unlikeTarget = false;
+  CHECK_FALSE(MissRule::miss(in, g));
+}
+
+TEST_CASE("PeakLevel: unlike the target below half its usual peak", "[core][peaklevel]") {
+  PeakLevel p;
+  p.reset();
+  CHECK_FALSE(p.unlike(0.f));  // nothing learnt yet: nothing to judge by
+  p.learnt(0.6f);
+  CHECK(p.mean() == 0.6f);  // the first peak, not a blend from 0
+  CHECK(p.unlike(0.29f));
+  CHECK_FALSE(p.unlike(0.31f));
+  p.learnt(-1.f);  // no response: ignored
+  CHECK(p.mean() == 0.6f);
+  for (int i = 0; i < 100; ++i) p.learnt(0.2f);  // the target's look changed: follows it
+  CHECK(p.mean() < 0.21f);
+  CHECK_FALSE(p.unlike(0.15f));
+  p.reset();
+  CHECK_FALSE(p.unlike(0.f));
 }
 
 TEST_CASE("OcclusionHold: held where learnt, moved on at the learnt velocity, for kMaxHoldS",
@@ -232,25 +262,42 @@ TEST_CASE("Reseeder: the lost scan's tiles cover the image, round and round", "[
   CHECK(gReseeder.nextTile(t).x == first.x);  // back to the first
 }
 
-TEST_CASE("AppearanceCue: the filter in 2D, the template in 3D, none when off",
+TEST_CASE("AppearanceCue: the filter tracks, the template judges in 3D, none when off",
           "[core][appearancecue]") {
   const Frame f = scene(0);
   gChannels.compute(f, PixelRect{0, 0, W, H}, false);
   const Box win{60.f, 40.f, 24.f, 24.f};
+  const Box away{10.f, 70.f, 24.f, 24.f};
   gCue.start(false, true, false, f.rgb, gChannels.tables(), win);
   CHECK_FALSE(gCue.enabled());
+  // 2D: the filter alone; it tracks and scans, and judges nothing.
   gCue.start(true, true, false, f.rgb, gChannels.tables(), win);
   CHECK(gCue.isFilter());
-  CHECK(gCue.ready());
-  CHECK(gCue.minPeak() == tuning::dcf::kMinPeak);
+  CHECK(gCue.trackingReady());
+  CHECK(gCue.scanReady());
+  CHECK(gCue.scanMinPeak() == tuning::dcf::kMinPeak);
   CHECK(gCue.scanStepSides() == CorrelationFilter::kPadding);
   CHECK(gCue.region(win).w == CorrelationFilter::region(win).w);
   CHECK(gCue.search(f.rgb, gChannels.tables(), win, true));
+  CHECK(gCue.minPeak() == tuning::dcf::kMinPeak);
+  CHECK(gCue.judgesTarget(gChannels.tables(), away));
+  // 3D: the filter tracks (one scale), the template scans and judges.
   gCue.start(true, true, true, f.rgb, gChannels.tables(), win);
-  CHECK_FALSE(gCue.isFilter());
-  CHECK(gCue.ready());
-  CHECK(gCue.minPeak() == tuning::correlation::kMinPeak);
+  CHECK(gCue.isFilter());
+  CHECK(gCue.search(f.rgb, gChannels.tables(), win, false));
+  CHECK(gCue.minPeak() == tuning::dcf::kMinPeak);
+  CHECK(gCue.region(win).w == CorrelationFilter::region(win).w);
+  CHECK(gCue.scanMinPeak() == tuning::correlation::kMinPeak);
   CHECK(gCue.scanStepSides() == 3.f);
+  CHECK(gCue.scan(f.rgb, gChannels.tables(), win));
+  CHECK(gCue.minPeak() == tuning::correlation::kMinPeak);
+  CHECK(gCue.peak() > 0.9f);  // the template on the window it was learnt from
+  CHECK(gCue.judgesTarget(gChannels.tables(), win));
+  // The template alone (no filter wanted).
+  gCue.start(true, false, false, f.rgb, gChannels.tables(), win);
+  CHECK_FALSE(gCue.isFilter());
+  CHECK(gCue.trackingReady());
+  CHECK(gCue.minPeak() == tuning::correlation::kMinPeak);
   CHECK(gCue.region(win).w == CorrelationCue::region(win).w);
   CHECK(gCue.search(f.rgb, gChannels.tables(), win, false));
   CHECK(gCue.peak() == gCue.peak());  // a number

@@ -1,8 +1,11 @@
 // The track's appearance cue (beyond the paper; with `correlationCue`): the one object
-// the tracker asks, whichever it is. In 2D with `correlationFilter` (RGB, or the 2D
-// fallback) the correlation filter on HOG, gray and colour cells (CorrelationFilter); else
-// the slowly learnt gray template (CorrelationCue): in 3D the filter cost the carried
-// target (`held`) 0.9 against a seed spread of 0.7 (docs/algorithm.md).
+// the tracker asks, whichever it is. With `correlationFilter` the correlation filter on
+// HOG, gray and colour cells (CorrelationFilter) tracks, in 2D and in 3D; else the slowly
+// learnt gray template (CorrelationCue). In 3D the filter searches the last window's
+// scale only (the depth sets the scale), and the template stays beside it as the judge
+// of "found": the lost scan searches with it, and a target found again must match it
+// (the filter, which learns every frame, answered on a patch of wall the classifier then
+// confirmed). Figures: docs/algorithm.md.
 #pragma once
 
 #include "cuetrack/core/CorrelationCue.hpp"
@@ -16,29 +19,55 @@ namespace cuetrack {
 
 class AppearanceCue {
  public:
-  // The cue a new track uses (none when !enabled), first learnt on window `win`.
-  void start(bool enabled, bool filterWanted, bool is3d, const RgbView& rgb, const FrameTables& t,
-             const Box& win);
+  // The cue a new track uses (none when !enabled), first learnt on window `win`;
+  // templateJudges: with the filter, the template judges re-detections (3D).
+  void start(bool enabled, bool filterWanted, bool templateJudges, const RgbView& rgb,
+             const FrameTables& t, const Box& win);
   bool enabled() const { return _enabled; }
   // The correlation filter, which learns on every tracked frame (Tracker::decide).
   bool isFilter() const { return _filter; }
 
+  // A frame fit to learn: the cue (and the judging template) learn window `win`.
   void learn(const RgbView& rgb, const FrameTables& t, const Box& win) {
     if (_filter) _dcf.learn(rgb, win, tuning::dcf::kLearnRate);
-    if (_enabled && !_filter) _corr.learn(t, win, tuning::correlation::kLearnRate);
+    if (_template) _corr.learn(t, win, tuning::correlation::kLearnRate);
   }
-  // scales: the filter also searches one scale step down and up (the template has one).
+  // Any other tracked frame: the filter follows the target (the template does not).
+  void follow(const RgbView& rgb, const Box& win) {
+    if (_filter) _dcf.learn(rgb, win, tuning::dcf::kLearnRate);
+  }
+  // Tracking: the cue around the last window; scales: the filter also searches one
+  // scale step down and up (the template has one).
   bool search(const RgbView& rgb, const FrameTables& t, const Box& around, bool scales) {
+    _lastTemplate = !_filter;
     return _filter ? _dcf.search(rgb, around, scales) : _corr.search(t, around);
   }
-  bool ready() const { return _filter ? _dcf.ready() : _corr.ready(); }
-  float peak() const { return _filter ? _dcf.peak() : _corr.peak(); }
-  Box peakBox() const { return _filter ? _dcf.peakBox() : _corr.peakBox(); }
+  // Lost: one tile of the scan, with the judge when there is one.
+  bool scan(const RgbView& rgb, const FrameTables& t, const Box& around) {
+    _lastTemplate = _template;
+    return _template ? _corr.search(t, around) : _dcf.search(rgb, around, false);
+  }
+  // Whether window `win` matches the judging template (true without one).
+  bool judgesTarget(const FrameTables& t, const Box& win) const {
+    return !_template || _corr.match(t, win) >= tuning::correlation::kMinPeak;
+  }
+  // Of the last search() or scan():
+  float peak() const { return _lastTemplate ? _corr.peak() : _dcf.peak(); }
+  Box peakBox() const { return _lastTemplate ? _corr.peakBox() : _dcf.peakBox(); }
   // The peak that is taken for the target (particles are drawn at it).
-  float minPeak() const { return _filter ? tuning::dcf::kMinPeak : tuning::correlation::kMinPeak; }
+  float minPeak() const {
+    return _lastTemplate ? tuning::correlation::kMinPeak : tuning::dcf::kMinPeak;
+  }
   // The response at image point (u, v) of the last search's map.
-  float at(float u, float v) const { return _filter ? _dcf.at(u, v) : _corr.at(u, v); }
-  // The box a search around `around` reads.
+  float at(float u, float v) const { return _lastTemplate ? _corr.at(u, v) : _dcf.at(u, v); }
+  // Whether the tracking cue, the scanning one, has a model.
+  bool trackingReady() const { return _filter ? _dcf.ready() : _corr.ready(); }
+  bool scanReady() const { return _template ? _corr.ready() : _dcf.ready(); }
+  // The least peak a scan's tile must reach to be taken.
+  float scanMinPeak() const {
+    return _template ? tuning::correlation::kMinPeak : tuning::dcf::kMinPeak;
+  }
+  // The box a tracking search around `around` reads.
   Box region(const Box& around) const {
     return _filter ? CorrelationFilter::region(around) : CorrelationCue::region(around);
   }
@@ -46,14 +75,16 @@ class AppearanceCue {
   // kReach cells (1.5 sides) of its centre (the filter: kPadding / 2 sides), so tiles 3
   // sides apart cover the image.
   float scanStepSides() const {
-    return _filter ? CorrelationFilter::kPadding
-                   : 2.f * static_cast<float>(CorrelationCue::kReach) /
-                         static_cast<float>(CorrelationCue::kCells);
+    return _template ? 2.f * static_cast<float>(CorrelationCue::kReach) /
+                           static_cast<float>(CorrelationCue::kCells)
+                     : CorrelationFilter::kPadding;
   }
 
  private:
   bool _enabled = false;
-  bool _filter = false;  // this track's cue is _dcf
+  bool _filter = false;        // this track's cue is _dcf
+  bool _template = false;      // _corr is this track's cue, or the judge beside the filter
+  bool _lastTemplate = false;  // the last search or scan was _corr's
   CorrelationCue _corr;
   CorrelationFilter _dcf;
 };

@@ -27,6 +27,7 @@
 #include "cuetrack/core/NegativeSampler.hpp"
 #include "cuetrack/core/OcclusionHold.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
+#include "cuetrack/core/PeakLevel.hpp"
 #include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
@@ -136,12 +137,13 @@ class Tracker {
   WindowPadding _padding{};    // target -> window, for a target under kMinTrackedSidePx
   SizeFilter2d _sizeFilter{};  // 2D: the estimate's size, smoothed
   Particle _lastEstimate{};
-  Particle _prevEstimate{};                  // the last frame's estimate (correlate() moves it)
-  AppearanceCue _cue;                        // correlationCue: the template (3D) or the filter (2D)
-  RgbView _rgb{};                            // update()'s colour image, for the filter
-  bool _corrActive = false;                  // this frame's map was searched
-  float _corrScores[kMaxParticles];          // the cue's response at each particle
-  Reseeder _reseeder;                        // particles at the cue's peak; the lost scan's tiles
+  Particle _prevEstimate{};          // the last frame's estimate (correlate() moves it)
+  AppearanceCue _cue;                // correlationCue: the filter (and template), or the template
+  PeakLevel _peakLevel;              // ... the filter's peak on the target (3D: found again?)
+  RgbView _rgb{};                    // update()'s colour image, for the filter
+  bool _corrActive = false;          // this frame's map was searched
+  float _corrScores[kMaxParticles];  // the cue's response at each particle
+  Reseeder _reseeder;                // particles at the cue's peak; the lost scan's tiles
   uint8_t _movedValid[Reseeder::kMaxMoved];  // ... whether each is scored
   float _movedScores[Reseeder::kMaxMoved];
   // occlusionGate: lost while covered by a nearer surface, the target is reported where

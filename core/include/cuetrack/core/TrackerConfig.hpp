@@ -38,9 +38,9 @@ struct TrackerConfig {
   // Abrupt motion: a slowly learnt gray template is matched densely around the last
   // estimate (CorrelationCue); particles are drawn at its peak and weighed by it too.
   bool correlationCue = false;
-  // ... in 2D (RGB, or the 2D fallback) the cue is a correlation filter on HOG, gray and
-  // colour cells, searched at three scales (CorrelationFilter), instead of the gray
-  // template; 3D keeps the template.
+  // ... the cue is a correlation filter on HOG, gray and colour cells (CorrelationFilter)
+  // instead of the gray template; searched at three scales in 2D, at the cylinder's own
+  // in 3D (the depth sets the scale).
   bool correlationFilter = false;
   // 3D: a frame whose box is mostly covered by a nearer surface is not learnt (Occlusion).
   bool occlusionGate = false;
