@@ -212,8 +212,9 @@ TEST_CASE("best follows a target crossing the frame at 40 px a frame", "[core][e
   // The fast scene: a 40 px wide target moving 40 px a frame, turning every 12 frames. The
   // particles' motion noise does not reach where it is next; the correlation cue's map
   // (1.5 sides around the last estimate) does. Seeds 1-5: best keeps it in all five (hit
-  // rates 0.93-1.0, mean 0.96); the control, best without the cue, 0.52-0.68 (mean 0.59).
-  // Under qemu one seed, 60 frames.
+  // rates 0.91-0.97, mean 0.95, since the filter tracks in 3D: 0.93-1.0 with the template);
+  // the control, best without the cue, 0.52-0.68 (mean 0.59). Under qemu one seed, 60
+  // frames: 0.90 against the control's 0.61, so 0.85 there (the filter's first turns).
   const int seeds = emulated() ? 1 : sanitized() ? 2 : 5;
   const int frames = emulated() ? 60 : 150;
   TrackerConfig control = presetConfig(Preset::Best);
@@ -232,7 +233,7 @@ TEST_CASE("best follows a target crossing the frame at 40 px a frame", "[core][e
   }
   INFO("mean hit rate " << bestHits << " with, " << controlHits << " without; " << kept << " of "
                         << seeds << " seeds kept");
-  CHECK(bestHits >= 0.9f);
+  CHECK(bestHits >= (emulated() ? 0.85f : 0.9f));
   CHECK(bestHits >= controlHits + 0.25f);
   CHECK(kept >= seeds - 1);
 }
