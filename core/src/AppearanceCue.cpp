@@ -2,11 +2,11 @@
 
 namespace cuetrack {
 
-void AppearanceCue::start(bool enabled, bool filterWanted, bool templateJudges, const RgbView& rgb,
+void AppearanceCue::start(bool enabled, bool filterWanted, bool templateScans, const RgbView& rgb,
                           const FrameTables& t, const Box& win) {
   _enabled = enabled;
   _filter = enabled && filterWanted;
-  _template = enabled && (!_filter || templateJudges);
+  _template = enabled && (!_filter || templateScans);
   _lastTemplate = !_filter;
   if (_filter) _dcf.reset(rgb, win);
   if (_template) _corr.reset(t, win);

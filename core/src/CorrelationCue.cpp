@@ -165,21 +165,4 @@ float CorrelationCue::at(float u, float v) const {
   return _response[oy * kOffsets + ox];
 }
 
-float CorrelationCue::match(const FrameTables& t, const Box& win) const {
-  constexpr int n = kCells * kCells;
-  float patch[n];
-  if (!_ready || _flat || !cells(t, win, patch)) return kNoResponse;
-  float mean = 0.f;
-  for (float v : patch) mean += v;
-  mean /= static_cast<float>(n);
-  float dot = 0.f, var = 0.f;
-  for (int i = 0; i < n; ++i) {
-    const float d = patch[i] - mean;
-    dot += _unit[i] * d;
-    var += d * d;
-  }
-  if (!(var > kMinSpread)) return 0.f;
-  return dot / fmath::sqrtf(var);
-}
-
 }  // namespace cuetrack

@@ -262,15 +262,14 @@ TEST_CASE("Reseeder: the lost scan's tiles cover the image, round and round", "[
   CHECK(gReseeder.nextTile(t).x == first.x);  // back to the first
 }
 
-TEST_CASE("AppearanceCue: the filter tracks, the template judges in 3D, none when off",
+TEST_CASE("AppearanceCue: the filter tracks, the template scans in 3D, none when off",
           "[core][appearancecue]") {
   const Frame f = scene(0);
   gChannels.compute(f, PixelRect{0, 0, W, H}, false);
   const Box win{60.f, 40.f, 24.f, 24.f};
-  const Box away{10.f, 70.f, 24.f, 24.f};
   gCue.start(false, true, false, f.rgb, gChannels.tables(), win);
   CHECK_FALSE(gCue.enabled());
-  // 2D: the filter alone; it tracks and scans, and judges nothing.
+  // 2D: the filter alone; it tracks and scans.
   gCue.start(true, true, false, f.rgb, gChannels.tables(), win);
   CHECK(gCue.isFilter());
   CHECK(gCue.trackingReady());
@@ -280,8 +279,7 @@ TEST_CASE("AppearanceCue: the filter tracks, the template judges in 3D, none whe
   CHECK(gCue.region(win).w == CorrelationFilter::region(win).w);
   CHECK(gCue.search(f.rgb, gChannels.tables(), win, true));
   CHECK(gCue.minPeak() == tuning::dcf::kMinPeak);
-  CHECK(gCue.judgesTarget(gChannels.tables(), away));
-  // 3D: the filter tracks (one scale), the template scans and judges.
+  // 3D: the filter tracks (one scale), the template scans.
   gCue.start(true, true, true, f.rgb, gChannels.tables(), win);
   CHECK(gCue.isFilter());
   CHECK(gCue.search(f.rgb, gChannels.tables(), win, false));
@@ -292,7 +290,6 @@ TEST_CASE("AppearanceCue: the filter tracks, the template judges in 3D, none whe
   CHECK(gCue.scan(f.rgb, gChannels.tables(), win));
   CHECK(gCue.minPeak() == tuning::correlation::kMinPeak);
   CHECK(gCue.peak() > 0.9f);  // the template on the window it was learnt from
-  CHECK(gCue.judgesTarget(gChannels.tables(), win));
   // The template alone (no filter wanted).
   gCue.start(true, false, false, f.rgb, gChannels.tables(), win);
   CHECK_FALSE(gCue.isFilter());

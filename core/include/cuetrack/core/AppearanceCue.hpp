@@ -2,10 +2,8 @@
 // the tracker asks, whichever it is. With `correlationFilter` the correlation filter on
 // HOG, gray and colour cells (CorrelationFilter) tracks, in 2D and in 3D; else the slowly
 // learnt gray template (CorrelationCue). In 3D the filter searches the last window's
-// scale only (the depth sets the scale), and the template stays beside it as the judge
-// of "found": the lost scan searches with it, and a target found again must match it
-// (the filter, which learns every frame, answered on a patch of wall the classifier then
-// confirmed). Figures: docs/algorithm.md.
+// scale only (the depth sets the scale), and the template stays beside it to scan the
+// image while the target is lost. Figures: docs/algorithm.md.
 #pragma once
 
 #include "cuetrack/core/CorrelationCue.hpp"
@@ -20,14 +18,14 @@ namespace cuetrack {
 class AppearanceCue {
  public:
   // The cue a new track uses (none when !enabled), first learnt on window `win`;
-  // templateJudges: with the filter, the template judges re-detections (3D).
-  void start(bool enabled, bool filterWanted, bool templateJudges, const RgbView& rgb,
+  // templateScans: with the filter, the template is kept to scan while lost (3D).
+  void start(bool enabled, bool filterWanted, bool templateScans, const RgbView& rgb,
              const FrameTables& t, const Box& win);
   bool enabled() const { return _enabled; }
   // The correlation filter, which learns on every tracked frame (Tracker::decide).
   bool isFilter() const { return _filter; }
 
-  // A frame fit to learn: the cue (and the judging template) learn window `win`.
+  // A frame fit to learn: the cue (and the scanning template) learn window `win`.
   void learn(const RgbView& rgb, const FrameTables& t, const Box& win) {
     if (_filter) _dcf.learn(rgb, win, tuning::dcf::kLearnRate);
     if (_template) _corr.learn(t, win, tuning::correlation::kLearnRate);
@@ -42,14 +40,10 @@ class AppearanceCue {
     _lastTemplate = !_filter;
     return _filter ? _dcf.search(rgb, around, scales) : _corr.search(t, around);
   }
-  // Lost: one tile of the scan, with the judge when there is one.
+  // Lost: one tile of the scan, with the template when there is one.
   bool scan(const RgbView& rgb, const FrameTables& t, const Box& around) {
     _lastTemplate = _template;
     return _template ? _corr.search(t, around) : _dcf.search(rgb, around, false);
-  }
-  // Whether window `win` matches the judging template (true without one).
-  bool judgesTarget(const FrameTables& t, const Box& win) const {
-    return !_template || _corr.match(t, win) >= tuning::correlation::kMinPeak;
   }
   // Of the last search() or scan():
   float peak() const { return _lastTemplate ? _corr.peak() : _dcf.peak(); }
@@ -83,7 +77,7 @@ class AppearanceCue {
  private:
   bool _enabled = false;
   bool _filter = false;        // this track's cue is _dcf
-  bool _template = false;      // _corr is this track's cue, or the judge beside the filter
+  bool _template = false;      // _corr is this track's cue, or scans beside the filter
   bool _lastTemplate = false;  // the last search or scan was _corr's
   CorrelationCue _corr;
   CorrelationFilter _dcf;

@@ -51,9 +51,6 @@ class CorrelationCue {
   // The response at the offset nearest a window centred at (u, v) [px], kNoResponse
   // outside the searched map.
   float at(float u, float v) const;
-  // NCC of the template with window `win` alone (no search); kNoResponse without a
-  // template or where the window is not whole on the tables, 0 on a flat window.
-  float match(const FrameTables& t, const Box& win) const;
 
  private:
   // Mean gray of the window's cells into out[kCells * kCells]; false if any is off the tables.
