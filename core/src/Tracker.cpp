@@ -276,7 +276,12 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     in.unlikeTarget = _is3d && _corrActive && _cue.isFilter() && _peakLevel.unlike(_cue.peak());
     miss = MissRule::miss(in, _depthGuard);
     e.miss = miss;
-    _state = _lost.step(_state, miss ? 0.f : e.confidence);
+    // 3D, tracking: the filter still answers like the target on the estimate (a miss
+    // stays a miss: the depth or the contrast said it is not the target).
+    const bool filterSees = _is3d && !wasLost && !miss && _corrActive && _cue.isFilter() &&
+                            _peakLevel.like(_cue.peak()) &&
+                            overlap(_cue.peakBox(), e.box) >= tuning::lost::kOnEstimate;
+    _state = _lost.step(_state, miss ? 0.f : e.confidence, filterSees);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
   }
   // Just found again (on probation): the estimate may be off the target's centre, or

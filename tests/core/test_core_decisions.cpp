@@ -110,14 +110,18 @@ TEST_CASE("MissRule: on probation, a find unlike the target is a miss", "[core][
   CHECK_FALSE(MissRule::miss(in, g));
 }
 
-TEST_CASE("PeakLevel: unlike the target below half its usual peak", "[core][peaklevel]") {
+TEST_CASE("PeakLevel: unlike the target below half its usual peak, like it from there",
+          "[core][peaklevel]") {
   PeakLevel p;
   p.reset();
   CHECK_FALSE(p.unlike(0.f));  // nothing learnt yet: nothing to judge by
+  CHECK_FALSE(p.like(1.f));
   p.learnt(0.6f);
   CHECK(p.mean() == 0.6f);  // the first peak, not a blend from 0
   CHECK(p.unlike(0.29f));
+  CHECK_FALSE(p.like(0.29f));
   CHECK_FALSE(p.unlike(0.31f));
+  CHECK(p.like(0.31f));
   p.learnt(-1.f);  // no response: ignored
   CHECK(p.mean() == 0.6f);
   for (int i = 0; i < 100; ++i) p.learnt(0.2f);  // the target's look changed: follows it

@@ -47,6 +47,29 @@ TEST_CASE("lost after lostAfter low frames in a row, found after foundAfter high
   REQUIRE(s == TrackState::Tracking);
 }
 
+TEST_CASE("lost only when the cues agree: a low frame another cue still sees does not count",
+          "[core][gate]") {
+  LostDetector d;
+  d.reset();
+  TrackState s = TrackState::Tracking;
+  // The classifier dips for twice lostAfter frames while the filter still sees the target.
+  for (int i = 0; i < 2 * d.lostAfter; ++i) s = d.step(s, 0.1f, true);
+  REQUIRE(s == TrackState::Tracking);
+  // Once the filter no longer sees it either, lostAfter low frames lose it, as before.
+  for (int i = 0; i < d.lostAfter - 1; ++i) s = d.step(s, 0.1f, false);
+  REQUIRE(s == TrackState::Tracking);
+  s = d.step(s, 0.1f, false);
+  REQUIRE(s == TrackState::Lost);
+  // Neither "found" nor probation listen to it: a low frame while lost stays lost, and
+  // one on probation loses the target again.
+  s = d.step(d.step(s, 0.1f, true), 0.1f, true);
+  REQUIRE(s == TrackState::Lost);
+  s = d.step(d.step(s, 0.7f), 0.7f);
+  REQUIRE(d.onProbation());
+  s = d.step(s, 0.1f, true);
+  CHECK(s == TrackState::Lost);
+}
+
 TEST_CASE(
     "a look-alike well below the target's usual confidence is not found, from the "
     "first frames on",

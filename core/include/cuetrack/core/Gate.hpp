@@ -46,7 +46,11 @@ class LostDetector {
   float foundThreshold() const {
     return _typical - foundMargin > foundAbove ? _typical - foundMargin : foundAbove;
   }
-  TrackState step(TrackState s, float confidence) {
+  // stillSeen: another cue still sees the target at the estimate this frame (the
+  // correlation filter, 3D); a low confidence then does not count towards "lost": the
+  // target is lost when the cues agree it is gone, not when the classifier alone dips
+  // (a spinning target, a twin passing). It changes neither probation nor "found".
+  TrackState step(TrackState s, float confidence, bool stillSeen = false) {
     const float found = foundThreshold();
     if (s == TrackState::Tracking && _probation > 0) {
       --_probation;
@@ -65,7 +69,7 @@ class LostDetector {
         const float rate = 1.f / static_cast<float>(_typicalCount);
         _typical += (rate > typicalRate ? rate : typicalRate) * (confidence - _typical);
       }
-      _low = confidence < lostBelow ? _low + 1 : 0;
+      _low = confidence < lostBelow && !stillSeen ? _low + 1 : 0;
       if (_low >= lostAfter) {
         _low = _high = 0;
         return TrackState::Lost;

@@ -3,7 +3,9 @@
 // learnt. A target found again must reach a fraction of it while on probation ("found"
 // only when it is the target): the classifier alone confirmed a patch of wall beside a
 // target hidden by an occluder, where the filter answered at a tenth of its usual peak
-// (synthetic `occlusion`, docs/algorithm.md).
+// (synthetic `occlusion`, docs/algorithm.md). While tracking, a peak that still reaches
+// that fraction on the estimate keeps a low classifier frame from counting towards
+// "lost" (LostDetector: lost only when the cues agree).
 #pragma once
 
 namespace cuetrack {
@@ -29,6 +31,8 @@ class PeakLevel {
   float mean() const { return _mean; }
   // Whether a peak is too low for the target (never before a frame was learnt).
   bool unlike(float peak) const { return _seen && peak < kFoundFraction * _mean; }
+  // Whether a peak answers like the target (never before a frame was learnt).
+  bool like(float peak) const { return _seen && !(peak < kFoundFraction * _mean); }
 
  private:
   float _mean = 0.f;

@@ -99,6 +99,9 @@ inline constexpr float kTypicalRate = 0.1f;  // weight of the latest frame in th
 // target stands out by about 1 (less on real video, more on the synthetic scenes); a box
 // on a plain wall by nothing.
 inline constexpr float kMinContrast = 0.1f;
+// The correlation filter's peak box "on the estimate" (LostDetector's stillSeen): the
+// usual overlap for "the same place". Set before measuring, not tuned.
+inline constexpr float kOnEstimate = 0.5f;
 }  // namespace lost
 
 namespace search {  // re-acquisition while lost
