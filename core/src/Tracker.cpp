@@ -273,13 +273,14 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     in.onProbation = _lost.onProbation();
     in.depthMm = e.particle.p[2];
     in.contrast = e.contrast;
-    in.unlikeTarget = _is3d && _corrActive && _cue.isFilter() && _peakLevel.unlike(_cue.peak());
+    // 3D, tracked last frame (the filter searches only then): what its peak says.
+    const bool filterAnswered = _is3d && _corrActive && _cue.isFilter();
+    in.unlikeTarget = filterAnswered && _peakLevel.unlike(_cue.peak());
     miss = MissRule::miss(in, _depthGuard);
     e.miss = miss;
-    // 3D, tracking: the filter still answers like the target on the estimate (a miss
-    // stays a miss: the depth or the contrast said it is not the target).
-    const bool filterSees = _is3d && !wasLost && !miss && _corrActive && _cue.isFilter() &&
-                            _peakLevel.like(_cue.peak()) &&
+    // The filter still answers like the target on the estimate (a miss stays a miss:
+    // the depth or the contrast said it is not the target).
+    const bool filterSees = filterAnswered && !miss && _peakLevel.like(_cue.peak()) &&
                             overlap(_cue.peakBox(), e.box) >= tuning::lost::kOnEstimate;
     _state = _lost.step(_state, miss ? 0.f : e.confidence, filterSees);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;

@@ -32,7 +32,7 @@ class PeakLevel {
   // Whether a peak is too low for the target (never before a frame was learnt).
   bool unlike(float peak) const { return _seen && peak < kFoundFraction * _mean; }
   // Whether a peak answers like the target (never before a frame was learnt).
-  bool like(float peak) const { return _seen && !(peak < kFoundFraction * _mean); }
+  bool like(float peak) const { return _seen && !unlike(peak); }
 
  private:
   float _mean = 0.f;
