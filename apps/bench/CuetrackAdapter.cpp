@@ -1,6 +1,7 @@
 #include <memory>
 
 #include "TrackerAdapters.hpp"
+#include "cuetrack/core/FilterTracker.hpp"
 #include "cuetrack/core/Tracker.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 
@@ -91,17 +92,41 @@ class CuetrackBench final : public BenchTracker {
   platform::MonotonicClock _clock;
 };
 
+// `dcf`: the background-aware filter alone (FilterTracker), deterministic.
+class FilterBench final : public BenchTracker {
+ public:
+  bool init(const CachedFrame& f, const Box& box, uint64_t, std::string* err) override {
+    static std::unique_ptr<FilterTracker> shared = std::make_unique<FilterTracker>();
+    _t = shared.get();
+    const InitError e = _t->init(f.frame(), box);
+    if (e == InitError::None) return true;
+    *err = std::string("cannot run: init failed: ") + toString(e);
+    return false;
+  }
+  Box update(const CachedFrame& f, double* stageUs) override {
+    const uint64_t t0 = _clock.nowUs();
+    const TrackResult r = _t->update(f.frame());
+    stageUs[4] = static_cast<double>(_clock.nowUs() - t0);
+    return r.state == TrackState::Tracking ? r.box : Box{};
+  }
+
+ private:
+  FilterTracker* _t = nullptr;
+  platform::MonotonicClock _clock;
+};
+
 }  // namespace
 
 bool isCuetrackConfig(const std::string& config) {
   Preset p;
   TrackerConfig c;
-  return parsePreset(config.c_str(), &p) || parseAblation(config, &c);
+  return config == "dcf" || parsePreset(config.c_str(), &p) || parseAblation(config, &c);
 }
 
 std::unique_ptr<BenchTracker> makeCuetrackBench(const std::string& config, std::string* err) {
   Preset p;
   TrackerConfig c;
+  if (config == "dcf") return std::make_unique<FilterBench>();
   if (parsePreset(config.c_str(), &p)) {
     c = presetConfig(p);
   } else if (!parseAblation(config, &c)) {
