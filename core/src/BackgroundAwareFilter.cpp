@@ -17,6 +17,11 @@ constexpr float kMu0 = 1.f * kT;
 constexpr float kMuGrowth = 10.f;
 constexpr float kMuMax = 1e4f * kT;
 constexpr float kLambda = 0.01f;
+// The mask: a cell of the box whose samples' mean likelihood of being target is below
+// this is background; under kMinMaskShare of the box left, the whole box (CSR-DCF's
+// fallback: a target of its background's colours).
+constexpr float kMaskLikelihood = 0.5f;
+constexpr float kMinMaskShare = 0.25f;
 // The label's spread: 1/16 of the target's side in cells (BACF's output_sigma_factor).
 constexpr float kLabelSigmaCells = static_cast<float>(kN) / BackgroundAwareFilter::kPadding / 16.f;
 
@@ -68,17 +73,39 @@ bool BackgroundAwareFilter::transformed(const RgbView& rgb, const Box& target) {
   return true;
 }
 
+ForegroundModel::Rect BackgroundAwareFilter::targetSamples() const {
+  constexpr int c = ForegroundModel::kCellPx;
+  return ForegroundModel::Rect{_boxX0 * c, _boxY0 * c, _boxX1 * c, _boxY1 * c};
+}
+
+void BackgroundAwareFilter::updateMask() {
+  int kept = 0, total = 0;
+  _colour.likelihood(_features.samples(), _likelihood);
+  ForegroundModel::cellMeans(_likelihood, _cells);
+  for (int y = 0; y < kN; ++y)
+    for (int x = 0; x < kN; ++x) {
+      const bool in = y >= _boxY0 && y < _boxY1 && x >= _boxX0 && x < _boxX1;
+      const bool target = _cells[y * kN + x] >= kMaskLikelihood;
+      _mask[y * kN + x] = in && target ? 1.f : 0.f;
+      total += in ? 1 : 0;
+      kept += in && target ? 1 : 0;
+    }
+  // Too few cells look like the target (a box of one colour with its surround): the
+  // whole box, as a plain BACF.
+  if (static_cast<float>(kept) < kMinMaskShare * static_cast<float>(total))
+    for (int y = _boxY0; y < _boxY1; ++y)
+      for (int x = _boxX0; x < _boxX1; ++x) _mask[y * kN + x] = 1.f;
+}
+
 bool BackgroundAwareFilter::reset(const RgbView& rgb, const Box& target) {
   _ready = false;
   if (!transformed(rgb, target)) return false;
   // The target's cells: its sides over the window's, in cells.
   const float side = kPadding * fmath::sqrtf(target.w * target.h);
-  int x0, x1, y0, y1;
-  cropRange(static_cast<float>(kN) * target.w / side, &x0, &x1);
-  cropRange(static_cast<float>(kN) * target.h / side, &y0, &y1);
-  for (int y = 0; y < kN; ++y)
-    for (int x = 0; x < kN; ++x)
-      _mask[y * kN + x] = (y >= y0 && y < y1 && x >= x0 && x < x1) ? 1.f : 0.f;
+  cropRange(static_cast<float>(kN) * target.w / side, &_boxX0, &_boxX1);
+  cropRange(static_cast<float>(kN) * target.h / side, &_boxY0, &_boxY1);
+  _colour.reset(_features.samples(), targetSamples());
+  updateMask();
   for (int l = 0; l < K; ++l) {
     for (int i = 0; i < kFftSize; ++i) {
       _mRe[l][i] = _zRe[l][i];
@@ -92,6 +119,8 @@ bool BackgroundAwareFilter::reset(const RgbView& rgb, const Box& target) {
 
 void BackgroundAwareFilter::learn(const RgbView& rgb, const Box& target, float rate) {
   if (!_ready || !transformed(rgb, target)) return;
+  _colour.learn(_features.samples(), targetSamples(), kColourRate);
+  updateMask();
   const float keep = 1.f - rate;
   for (int l = 0; l < K; ++l) {
     for (int i = 0; i < kFftSize; ++i) {
@@ -140,7 +169,7 @@ void BackgroundAwareFilter::solve() {
         _gIm[l][i] = invMu * (qi - (xr * _sIm[i] + xi * _sRe[i]));
       }
     }
-    if (it + 1 == kIterations) break;  // the next h and u would not be used
+    if (it + 1 == kIterations) break;  // the next h and l would not be used
     // h: the crop of (mu g + l) / (mu + lambda) (two real channels a complex transform),
     // then l += mu (g - h).
     const float shrink = 1.f / (mu + kLambda);
@@ -166,6 +195,19 @@ void BackgroundAwareFilter::solve() {
     }
     mu = mu * kMuGrowth < kMuMax ? mu * kMuGrowth : kMuMax;
   }
+  measureSelfPeak();
+}
+
+void BackgroundAwareFilter::measureSelfPeak() {
+  // The response at zero shift on the model: (1/T) sum over frequencies of conj(g) x.
+  float r = 0.f;
+  for (int l = 0; l < K; ++l) {
+    float s = 0.f;
+    for (int i = 0; i < kFftSize; ++i) s += _gRe[l][i] * _mRe[l][i] + _gIm[l][i] * _mIm[l][i];
+    r += s;
+  }
+  r /= kT;
+  _selfPeak = r > 0.f ? r : 1.f;
 }
 
 BackgroundAwareFilter::Answer BackgroundAwareFilter::search(const RgbView& rgb, const Box& target) {
@@ -182,6 +224,9 @@ BackgroundAwareFilter::Answer BackgroundAwareFilter::search(const RgbView& rgb, 
     }
   }
   fft::inverse2d(re, im);
+  // The map on its model's scale: 1 on what it learnt.
+  const float scale = 1.f / _selfPeak;
+  for (int i = 0; i < kFftSize; ++i) re[i] *= scale;
   int best = 0;
   for (int i = 1; i < kFftSize; ++i)
     if (re[i] > re[best]) best = i;

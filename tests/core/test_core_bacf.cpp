@@ -12,6 +12,7 @@
 #include "cuetrack/core/BackgroundAwareFilter.hpp"
 #include "cuetrack/core/ColourNames.hpp"
 #include "cuetrack/core/FilterTracker.hpp"
+#include "cuetrack/core/ForegroundModel.hpp"
 #include "cuetrack/core/HogCnFeatures.hpp"
 #include "cuetrack/platform/mavlink/Sha256.hpp"
 
@@ -140,6 +141,43 @@ TEST_CASE(
   REQUIRE(f.extract(flat, Box{8, 8, 40, 40}, gY));
   CHECK(gY[HogCnFeatures::kUnsignedChannel][c] ==
         Approx(gX[HogCnFeatures::kUnsignedChannel][c]).epsilon(0.1));
+}
+
+TEST_CASE(
+    "ForegroundModel: the target's colours are target, the surround's are not; learning "
+    "blends",
+    "[core][bacf]") {
+  constexpr int S = ForegroundModel::kSide;
+  static Rgb8 px[S * S];
+  static float map[S * S], cells[kFftSize];
+  static ForegroundModel m;
+  const ForegroundModel::Rect box{48, 40, 80, 88};
+  auto paint = [&](Rgb8 inside, Rgb8 outside) {
+    for (int y = 0; y < S; ++y)
+      for (int x = 0; x < S; ++x)
+        px[y * S + x] = (x >= box.x0 && x < box.x1 && y >= box.y0 && y < box.y1) ? inside : outside;
+  };
+  paint(Rgb8{220, 20, 20}, Rgb8{20, 20, 220});
+  m.reset(px, box);
+  m.likelihood(px, map);
+  CHECK(map[64 * S + 64] == 1.f);  // red: only in the box
+  CHECK(map[0] == 0.f);            // blue: only around it
+  ForegroundModel::cellMeans(map, cells);
+  CHECK(cells[16 * kFftSide + 16] == 1.f);
+  CHECK(cells[0] == 0.f);
+  // A colour never seen is neither.
+  px[0] = Rgb8{20, 220, 20};
+  m.likelihood(px, map);
+  CHECK(map[0] == 0.5f);
+  // The target turns blue like its surround: learnt at a rate, blue becomes more likely
+  // target than before, red stays target.
+  paint(Rgb8{20, 20, 220}, Rgb8{20, 20, 220});
+  m.learn(px, box, 0.5f);
+  paint(Rgb8{220, 20, 20}, Rgb8{20, 20, 220});
+  m.likelihood(px, map);
+  CHECK(map[64 * S + 64] == 1.f);
+  CHECK(map[0] > 0.05f);
+  CHECK(map[0] < 0.5f);
 }
 
 TEST_CASE("BackgroundAwareFilter: finds a moved target; refuses an empty box", "[core][bacf]") {

@@ -24,6 +24,7 @@
 #pragma once
 
 #include "cuetrack/core/Fft.hpp"
+#include "cuetrack/core/ForegroundModel.hpp"
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/core/HogCnFeatures.hpp"
 #include "cuetrack/core/Image.hpp"
@@ -37,6 +38,8 @@ class BackgroundAwareFilter {
   // The window's side over the target's (geometric mean of its sides): BACF's 5 on a
   // 50-cell grid puts 10 cells across the target; on our 32-cell grid 4 puts 8.
   static constexpr float kPadding = 4.f;
+  // The foreground model's learning rate (Staple's).
+  static constexpr float kColourRate = 0.04f;
 
   // The answer of a search: the peak's response (about 1 on what was learnt), the
   // target's box moved to it (the same size as the box searched), the peak to sidelobe
@@ -65,6 +68,17 @@ class BackgroundAwareFilter {
  private:
   bool transformed(const RgbView& rgb, const Box& target);  // into _zRe/_zIm
   void solve();                                             // ADMM: _model -> _g
+  void measureSelfPeak();                                   // _selfPeak from _g and _model
+  // The target's box in the window's samples.
+  ForegroundModel::Rect targetSamples() const;
+  // The mask P: the target's box, less its cells that the colours say are background.
+  void updateMask();
+
+  ForegroundModel _colour;
+  float _likelihood[ForegroundModel::kSide * ForegroundModel::kSide];
+  float _cells[kFftSize];
+  float _selfPeak = 1.f;  // the filter's response on its own model: the map's scale
+  int _boxX0 = 0, _boxX1 = 0, _boxY0 = 0, _boxY1 = 0;  // the target's cells in the window
 
   HogCnFeatures _features;
   float _cosine[kFftSize];
