@@ -1,7 +1,6 @@
 #include <memory>
 
 #include "TrackerAdapters.hpp"
-#include "cuetrack/core/FilterTracker.hpp"
 #include "cuetrack/core/Tracker.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 
@@ -20,7 +19,9 @@ Tracker& sharedTracker() {
 // best-nofastmotion (no jumping particles, no coasting over dropped frames),
 // best-nocorrelation (no template cue), best-noocclusion (learns covered frames too),
 // best-template (the gray template as the correlation cue, in 2D and 3D, not the correlation
-// filter), 1.1-centrednegatives (2D near negatives centred on the estimate).
+// filter), 1.1-centrednegatives (2D near negatives centred on the estimate),
+// best-nofilterlead (2D: the particles and classifier with the plain filter as their cue,
+// not the background-aware filter alone).
 bool parseAblation(const std::string& name, TrackerConfig* out) {
   struct Off {
     const char* suffix;
@@ -32,7 +33,8 @@ bool parseAblation(const std::string& name, TrackerConfig* out) {
                               {"-nocorrelation", &TrackerConfig::correlationCue},
                               {"-template", &TrackerConfig::correlationFilter},
                               {"-noocclusion", &TrackerConfig::occlusionGate},
-                              {"-centrednegatives", &TrackerConfig::anchoredNegatives2d}};
+                              {"-centrednegatives", &TrackerConfig::anchoredNegatives2d},
+                              {"-nofilterlead", &TrackerConfig::filterLeads2d}};
   for (const Off& o : kOffs) {
     const std::string suffix(o.suffix);
     if (name.size() <= suffix.size() ||
@@ -92,46 +94,22 @@ class CuetrackBench final : public BenchTracker {
   platform::MonotonicClock _clock;
 };
 
-// `dcf`: the background-aware filter alone (FilterTracker), deterministic.
-class FilterBench final : public BenchTracker {
- public:
-  bool init(const CachedFrame& f, const Box& box, uint64_t, std::string* err) override {
-    static std::unique_ptr<FilterTracker> shared = std::make_unique<FilterTracker>();
-    _t = shared.get();
-    const InitError e = _t->init(f.frame(), box);
-    if (e == InitError::None) return true;
-    *err = std::string("cannot run: init failed: ") + toString(e);
-    return false;
-  }
-  Box update(const CachedFrame& f, double* stageUs) override {
-    const uint64_t t0 = _clock.nowUs();
-    const TrackResult r = _t->update(f.frame());
-    stageUs[4] = static_cast<double>(_clock.nowUs() - t0);
-    return r.state == TrackState::Tracking ? r.box : Box{};
-  }
-
- private:
-  FilterTracker* _t = nullptr;
-  platform::MonotonicClock _clock;
-};
-
 }  // namespace
 
 bool isCuetrackConfig(const std::string& config) {
   Preset p;
   TrackerConfig c;
-  return config == "dcf" || parsePreset(config.c_str(), &p) || parseAblation(config, &c);
+  return parsePreset(config.c_str(), &p) || parseAblation(config, &c);
 }
 
 std::unique_ptr<BenchTracker> makeCuetrackBench(const std::string& config, std::string* err) {
   Preset p;
   TrackerConfig c;
-  if (config == "dcf") return std::make_unique<FilterBench>();
   if (parsePreset(config.c_str(), &p)) {
     c = presetConfig(p);
   } else if (!parseAblation(config, &c)) {
     *err = "unknown configuration '" + config +
-           "' (use 1.1 ... 1.4, 2.1 ... 2.5 or best, or an ablation such as best-nolost, "
+           "' (use 1.1 ... 1.4, 2.1 ... 2.5, dcf or best, or an ablation such as best-nolost, "
            "best-fixedsize)";
     return nullptr;
   }

@@ -41,11 +41,12 @@ const char* kAbout =
 const char* kFooter =
     "--tracker: cuetrack, opencv-kcf, opencv-csrt, opencv-mil, opencv-boosting,\n"
     "  opencv-medianflow, opencv-mosse, opencv-tld, or opencv-all (default cuetrack).\n"
-    "--config: 1.1 ... 1.4, 2.1 ... 2.5, best (the default), or a preset with a\n"
+    "--config: 1.1 ... 1.4, 2.1 ... 2.5, dcf, best (the default), or a preset with a\n"
     "  beyond-the-paper switch off: best-nolost, best-fixedsize, best-nofastmotion,\n"
     "  best-nocorrelation, best-noocclusion; or a paper preset with 2D negatives centred:\n"
     "  1.1-centrednegatives; best-template (the gray template as the correlation cue,\n"
-    "  not the correlation filter).\n"
+    "  not the correlation filter); best-nofilterlead (2D: particles and classifier,\n"
+    "  not the background-aware filter alone).\n"
     "SEQUENCE: a BoBoT video (NAME.avi, ground truth NAME.gt.txt beside it), any other\n"
     "  video (.mp4 .mkv .mov ...; NAME.gt.txt, or NAME.txt in OTB x,y,w,h form), an RGB-D\n"
     "  folder, an OTB or image folder, a fakenect recording (groundtruth.txt beside\n"
@@ -193,7 +194,7 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       }
       if (!isCuetrackConfig(c)) {
         *err = "--config: unknown configuration '" + c +
-               "' (1.1 ... 1.4, 2.1 ... 2.5, best; ablations best-nolost, best-fixedsize, "
+               "' (1.1 ... 1.4, 2.1 ... 2.5, dcf, best; ablations best-nolost, best-fixedsize, "
                "best-nofastmotion, best-nocorrelation, 1.1-centrednegatives, best-template)";
         return false;
       }

@@ -97,6 +97,12 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _is3d = space.is3d;
   _depthFeatures = space.depthFeatures;
   _fallbackWhy = space.why;
+  _filterLeads = !_is3d && _config.filterLeads2d;
+  if (_filterLeads) {
+    const InitError e = _lead.init(frame, target);
+    if (e == InitError::None) _state = TrackState::Tracking;
+    return e;
+  }
   _numWeak = space.numWeak;
   _lost.lostAfter = space.lostAfter;
   _k = frame.intrinsics;
@@ -410,6 +416,12 @@ TrackResult Tracker::update(const Frame& frame) {
   TrackResult r;
   r.state = _state;
   if (_state == TrackState::Idle) return r;
+  if (_filterLeads) {  // the filter keeps its box on a frame it cannot use
+    const uint64_t t = now();
+    r = _lead.update(frame);
+    if (_clock != nullptr) r.timesUs.total = static_cast<uint32_t>(now() - t);
+    return r;
+  }
   r.box = _padding.toTarget(_lastBox);
   if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
   const uint64_t t0 = now();

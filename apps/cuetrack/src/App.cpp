@@ -470,7 +470,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   static platform::MonotonicClock clock;
   if (!tracker.configure(opt.preset, opt.seed, &clock)) {
     char err[512];
-    std::snprintf(err, sizeof err, "--config %s: unknown preset (best, 1.1-1.4, 2.1-2.5)",
+    std::snprintf(err, sizeof err, "--config %s: unknown preset (best, dcf, 1.1-1.4, 2.1-2.5)",
                   opt.preset);
     reporter.report(err);
     return kExitUsage;

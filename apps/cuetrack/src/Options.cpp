@@ -197,7 +197,7 @@ void declare(cli::Command& cmd, AppOptions* o) {
   cmd.flag("--skip-bad-frames", "skip a recording's damaged frames (counted) instead of stopping",
            &o->skipBadFrames)
       ->group(run);
-  cmd.text("--config", "NAME", "tracker preset: best (default), 1.1-1.4, 2.1-2.5", &t.preset)
+  cmd.text("--config", "NAME", "tracker preset: best (default), dcf, 1.1-1.4, 2.1-2.5", &t.preset)
       ->group(run);
   cmd.option("--seed", "N", "random seed (default 1)",
              [o](const std::string& v) {

@@ -19,6 +19,7 @@
 #include "cuetrack/core/DepthMedian.hpp"
 #include "cuetrack/core/FastMotion.hpp"
 #include "cuetrack/core/FeaturePool.hpp"
+#include "cuetrack/core/FilterTracker.hpp"
 #include "cuetrack/core/Frame.hpp"
 #include "cuetrack/core/Gate.hpp"
 #include "cuetrack/core/InitError.hpp"
@@ -166,6 +167,9 @@ class Tracker {
   NegativeSampler _negatives{};
   CylinderSizer _sizer{};    // adaptCylinderSize: D, H and the centre follow the depth silhouette
   DepthMedian _depthMedian;  // where a new 3D track stands
+  // filterLeads2d: a 2D track is the background-aware filter's alone.
+  FilterTracker _lead;
+  bool _filterLeads = false;
 };
 // Everything together (Config.hpp's list of big buffers plus the small ones): 11,066,192 B
 // on x86-64 at 640x480 (docs/benchmarks.md), within the 16 MiB.

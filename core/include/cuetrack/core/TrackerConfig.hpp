@@ -53,6 +53,10 @@ struct TrackerConfig {
   // RGB tests use 32), and partial occlusions in RGB dip the confidence for longer.
   int numWeakClassifiers2d = 0;  // M in the 2D fallback, <= kMaxWeakClassifiers
   int lostAfter2d = 0;           // lost detection in the 2D fallback: frames of low confidence
+  // A track that runs 2D (asked for, or the fallback) is the background-aware correlation
+  // filter's alone (FilterTracker): it beats the particles and the classifier on real
+  // video (docs/algorithm.md). The `dcf` configuration, and `best` without depth.
+  bool filterLeads2d = false;
 };
 
 enum class Preset : uint8_t {
@@ -65,12 +69,13 @@ enum class Preset : uint8_t {
   Test2_3,
   Test2_4,
   Test2_5,  // RGB-D (BoBoT-D)
-  Best,
+  Dcf,      // the background-aware correlation filter alone (issue 53)
+  Best,     // last: the tests take the presets before it as the paper's and dcf
 };
-inline constexpr int kNumPresets = 10;
+inline constexpr int kNumPresets = 11;
 
 TrackerConfig presetConfig(Preset preset);
-// "1.1" ... "2.5", "best"; returns false for an unknown name.
+// "1.1" ... "2.5", "dcf", "best"; returns false for an unknown name.
 bool parsePreset(const char* name, Preset* out);
 const char* presetName(Preset preset);
 
