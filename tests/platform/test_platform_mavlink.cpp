@@ -186,9 +186,15 @@ TEST_CASE("the parser counts bad frames, skips noise and others' messages, and r
   const auto got = parseAll(stream, parser);
   CHECK(got.size() == 2);  // the good frame after the false start, and the last one
   CHECK(parser.stats().messages == 2);
-  CHECK(parser.stats().badCrc == 1);    // the corrupt copy
-  CHECK(parser.stats().badFrame == 2);  // the false start (0xFD as flags), the unknown flag
+  CHECK(parser.stats().badCrc() == 1);  // the corrupt copy
+  // The noise and the false start (0xFD as flags) in one run, the unknown flag.
+  CHECK(parser.stats().badUnknown() == 2);
+  CHECK(parser.stats().badLength() == 0);
   CHECK(parser.stats().ignored == 1);
+  // Every byte is in a message, the ignored frame, or counted as discarded.
+  const ParserStats& s = parser.stats();
+  CHECK(s.discardedBytes[0] + s.discardedBytes[1] + s.discardedBytes[2] + 2 * good.size() + 15 ==
+        stream.size());
 }
 
 TEST_CASE("a signed frame is read (its signature skipped)") {
@@ -202,7 +208,7 @@ TEST_CASE("a signed frame is read (its signature skipped)") {
   for (size_t i = 0; i < kSignatureBytes; ++i) w.push_back(static_cast<uint8_t>(i));
   Parser parser;
   CHECK(parseAll(w, parser).size() == 1);
-  CHECK(parser.stats().badCrc == 0);
+  CHECK(parser.stats().totalErrors() == 0);
 }
 
 TEST_CASE("SHA-256: the FIPS 180-4 examples, whole and in pieces") {

@@ -148,7 +148,10 @@ TEST_CASE("UDP: noise in a datagram never swallows the command in the next; all 
   CHECK(countAcks(acks, kCmdRequestMessage) == 1);
   CHECK(countAcks(acks, kCmdCameraStopTracking) == 1);
   CHECK(rig.link->stats().rxFrames == 3);
-  CHECK(rig.link->stats().rxErrors == 2);  // the cut header, the false start
+  // The cut header and the false start (cut by their datagrams' ends), the noise byte.
+  CHECK(rig.link->stats().rxErrors == 3);
+  CHECK(rig.link->stats().rxBadLength == 2);
+  CHECK(rig.link->stats().rxBadUnknown == 1);
   CHECK(rig.link->parserStats().ignored == 1);
 }
 

@@ -88,10 +88,10 @@ void MavlinkLink::pollBytes(LinkControl& control) {
     const size_t got = _port.read(_rx, sizeof _rx);
     for (size_t i = 0; i < got; ++i) {
       Message m;
-      const uint32_t badBefore = _parser.stats().badCrc + _parser.stats().badFrame;
-      if (_parser.push(_rx[i], &m)) received(m, control);
-      _port.stats().rxErrors += _parser.stats().badCrc + _parser.stats().badFrame - badBefore;
+      for (bool ready = _parser.push(_rx[i], &m); ready; ready = _parser.next(&m))
+        received(m, control);
     }
+    countParserErrors();
     if (got < sizeof _rx) break;
   }
 }
@@ -104,12 +104,22 @@ void MavlinkLink::pollDatagrams(LinkControl& control) {
     const size_t got = _port.read(_rx, sizeof _rx);
     if (got == 0) break;
     bytes += got;
-    const uint32_t badBefore = _parser.stats().badCrc + _parser.stats().badFrame;
     size_t at = 0;
     Message m;
     while (_parser.nextInDatagram(_rx, got, &at, &m)) received(m, control);
-    _port.stats().rxErrors += _parser.stats().badCrc + _parser.stats().badFrame - badBefore;
+    countParserErrors();
   }
+}
+
+// The parser's new discarded runs into the link's rx-errors, by reason.
+void MavlinkLink::countParserErrors() {
+  const ParserStats& p = _parser.stats();
+  LinkStats& s = _port.stats();
+  s.rxErrors += p.totalErrors() - _errorsCounted;
+  _errorsCounted = p.totalErrors();
+  s.rxBadCrc = p.badCrc();
+  s.rxBadLength = p.badLength();
+  s.rxBadUnknown = p.badUnknown();
 }
 
 void MavlinkLink::received(const Message& m, LinkControl& control) {

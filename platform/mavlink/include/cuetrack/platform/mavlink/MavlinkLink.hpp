@@ -97,6 +97,7 @@ class MavlinkLink final : public TrackLink {
   bool broadcastAllowed(const CommandLong& c) const;
   void pollBytes(LinkControl& control);
   void pollDatagrams(LinkControl& control);
+  void countParserErrors();
   void received(const Message& m, LinkControl& control);
   void handle(const Message& m, LinkControl& control);
   void handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t fromComp, bool broadcast,
@@ -117,6 +118,7 @@ class MavlinkLink final : public TrackLink {
   const Clock& _clock;
   LinkConfig _config;
   Parser _parser;
+  uint32_t _errorsCounted{0};  // of the parser's errors, already in rx-errors
   SignatureChecker _signatures;
   uint64_t _lastSignedTimestamp{0};
   uint8_t _rx[kRxBufferBytes]{};
