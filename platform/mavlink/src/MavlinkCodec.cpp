@@ -158,6 +158,7 @@ Parser::Step Parser::step(const uint8_t* w, size_t n, uint64_t pos, bool final) 
   if (h == Head::NeedMore) return final ? thrown(Discard::Length) : Step{Kind::NeedMore, 0};
   if (h == Head::Known && n >= total) {
     if (!verified(w, n, pos)) return thrown(Discard::Crc);
+    _stats.messageBytes += total;
     _inUnknownRun = false;
     return Step{Kind::Good, total};
   }
@@ -182,12 +183,14 @@ Parser::Step Parser::step(const uint8_t* w, size_t n, uint64_t pos, bool final) 
     }
   }
   ++_stats.ignored;
+  _stats.ignoredBytes += total;
   _inUnknownRun = false;
   return Step{Kind::Foreign, total};
 }
 
 void Parser::reset() {
-  _streamPos += _n;  // positions are never reused: the cache stays right
+  if (_n > 0) discard(_n, Discard::Length);  // a frame the lost line cut
+  _streamPos += _n;                          // positions are never reused: the cache stays right
   _n = 0;
   _inUnknownRun = false;
 }

@@ -80,6 +80,7 @@ inline constexpr int kDiscardReasons = 3;
 struct ParserStats {
   uint32_t messages = 0;  // known id, good CRC
   uint32_t ignored = 0;   // well-framed, an id we do not know (another component's traffic)
+  uint64_t messageBytes = 0, ignoredBytes = 0;
   // Discarded runs by reason (consecutive Unknown runs count once), and their bytes: every
   // byte read is in a message, an ignored frame, or here.
   uint32_t errors[kDiscardReasons]{};
@@ -113,7 +114,8 @@ class Parser {
   // byte stream's held bytes (push) are neither used nor changed; the stats are shared.
   bool nextInDatagram(const uint8_t* data, size_t n, size_t* offset, Message* out);
   const ParserStats& stats() const { return _stats; }
-  void reset();  // forget held bytes (the line was reopened)
+  size_t held() const { return _n; }  // stream bytes not yet decided
+  void reset();                       // forget held bytes (the line was reopened)
 
  private:
   enum class Kind : uint8_t { NeedMore, Good, Foreign, Discarded };
