@@ -21,8 +21,8 @@
 
 #include "LoopbackUdp.hpp"
 #include "TempDir.hpp"
-#include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
+#include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 #include "cuetrack/platform/linux/UdpSocket.hpp"

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -254,18 +255,18 @@ TEST_CASE("signing: our signed frame checks with the key, not without; replays r
     return m;
   };
   SignatureChecker checker(key);
-  CHECK(checker.check(parse(w, n)) == SignatureCheck::Good);
-  CHECK(checker.check(parse(w, n)) == SignatureCheck::Replayed);
+  CHECK(checker.check(parse(w, n), 0) == SignatureCheck::Good);
+  CHECK(checker.check(parse(w, n), 0) == SignatureCheck::Replayed);
   SigningKey other;
   SignatureChecker stranger(other);
-  CHECK(stranger.check(parse(w, n)) == SignatureCheck::BadSignature);
+  CHECK(stranger.check(parse(w, n), 0) == SignatureCheck::BadSignature);
   uint8_t plain[kMaxFrameBytes];
   const size_t k = encodeFrame(h, p, len, plain, sizeof plain);
-  CHECK(checker.check(parse(plain, k)) == SignatureCheck::Unsigned);
+  CHECK(checker.check(parse(plain, k), 0) == SignatureCheck::Unsigned);
   // A new stream a minute older than the newest timestamp known: refused.
   SignatureChecker fresh(key);
   fresh.noteTimestamp(123456789 + kSigningNewStreamSlack + 1);
-  CHECK(fresh.check(parse(w, n)) == SignatureCheck::TooOld);
+  CHECK(fresh.check(parse(w, n), 0) == SignatureCheck::TooOld);
 }
 
 TEST_CASE("camera mount: forward by default, pitch -90 looks down, offset added") {
@@ -644,4 +645,116 @@ TEST_CASE("MavlinkLink: a peer that stops reading never blocks; drops are counte
   const auto ms = rig.read();
   REQUIRE(ms.size() == 1);
   CHECK(ms[0].header.seq == 100);  // every message took a seq, sent or not
+}
+
+namespace {
+
+// A signed STOP_TRACKING from the ground station (255/190, link 1) with this timestamp.
+std::vector<uint8_t> signedStop(const SigningKey& key, uint64_t timestamp) {
+  CommandLong c;
+  c.command = kCmdCameraStopTracking;
+  c.targetSystem = 1;
+  c.targetComponent = 100;
+  uint8_t p[40];
+  Header h;
+  h.sysId = 255;
+  h.compId = 190;
+  h.msgId = kMsgCommandLong;
+  std::vector<uint8_t> w(kMaxFrameBytes);
+  w.resize(encodeSignedFrame(h, p, pack(c, p), key, 1, timestamp, w.data(), w.size()));
+  return w;
+}
+
+uint64_t timestampOf(const Message& m) {
+  uint64_t t = 0;
+  for (int i = 0; i < 6; ++i) t |= static_cast<uint64_t>(m.signature[1 + i]) << (8 * i);
+  return t;
+}
+
+// A signing link whose clock reads `clock` (signing units; 0: not set) at start.
+struct SignedRig {
+  FakeClock clock{5000};
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  SigningKey key;
+  std::unique_ptr<MavlinkLink> link;
+  Control control;
+  Parser host;
+  std::vector<uint64_t> sentTimestamps;  // of every frame the link sent, in order
+  explicit SignedRig(uint64_t clockTimestamp) {
+    for (int i = 0; i < 32; ++i) key.bytes[i] = static_cast<uint8_t>(3 * i + 1);
+    LinkConfig c;
+    c.signing = true;
+    c.key = key;
+    c.signingTimestamp = clockTimestamp;
+    link = std::make_unique<MavlinkLink>(cable.a(), clock, reporter, c);
+  }
+  // Polls with `in` waiting (if any); the ACKs the link answered.
+  int exchange(const std::vector<uint8_t>& in) {
+    if (!in.empty()) REQUIRE(cable.b().write(in.data(), in.size()).bytes == in.size());
+    link->poll(control, LinkStatus{});
+    int acks = 0;
+    uint8_t buf[512];
+    for (IoResult r; (r = cable.b().read(buf, sizeof buf, 0)).bytes > 0;)
+      for (size_t i = 0; i < r.bytes; ++i) {
+        Message m;
+        if (!host.push(buf[i], &m)) continue;
+        sentTimestamps.push_back(timestampOf(m));
+        acks += m.header.msgId == kMsgCommandAck;
+      }
+    return acks;
+  }
+  bool increasing() const {
+    for (size_t i = 1; i < sentTimestamps.size(); ++i)
+      if (sentTimestamps[i] <= sentTimestamps[i - 1]) return false;
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE(
+    "signing: a timestamp a minute ahead of our clock is refused, not adopted (issue 56, 3)") {
+  constexpr uint64_t kNow = 300000000000ull;  // about 2016
+  SignedRig rig(kNow);
+  rig.exchange({});  // the first heartbeat
+  // One correctly signed command at 2^48 - 3: refused and counted; our clock stays ours.
+  CHECK(rig.exchange(signedStop(rig.key, kSigningMaxTimestamp - 2)) == 0);
+  CHECK(rig.link->stats().rxRefused == 1);
+  rig.clock.advanceUs(1000000);
+  rig.exchange({});  // the next heartbeat
+  // 30 s ahead: within the minute, obeyed; two minutes ahead: refused.
+  CHECK(rig.exchange(signedStop(rig.key, kNow + 100000 + 3000000)) == 1);
+  CHECK(rig.exchange(signedStop(rig.key, kNow + 100000 + 12000000)) == 0);
+  CHECK(rig.link->stats().rxRefused == 2);
+  REQUIRE(rig.sentTimestamps.size() >= 3);
+  CHECK(rig.increasing());
+  // Never dragged towards 2^48: at most what we believed (30 s ahead) and a few steps.
+  CHECK(rig.sentTimestamps.back() < kNow + 100000 + 3000000 + 100);
+}
+
+TEST_CASE("signing on a board whose clock is not set: nothing after 2100 believed") {
+  SignedRig rig(0);
+  rig.exchange({});
+  CHECK(rig.exchange(signedStop(rig.key, kSigningMaxTimestamp - 2)) == 0);
+  constexpr uint64_t k2026 = 35000000000000ull;
+  CHECK(rig.exchange(signedStop(rig.key, k2026)) == 1);             // believed: now our clock
+  CHECK(rig.exchange(signedStop(rig.key, k2026 + 12000000)) == 0);  // 2 min ahead of it
+  CHECK(rig.link->stats().rxRefused == 2);
+  CHECK(rig.increasing());
+  CHECK(rig.sentTimestamps.back() > k2026);
+  CHECK(rig.sentTimestamps.back() < k2026 + 100);
+}
+
+TEST_CASE("signing: our timestamps never reach 2^48; what cannot be signed is dropped, counted") {
+  SignedRig rig(kSigningMaxTimestamp - 2);  // a clock set absurdly late
+  for (int i = 0; i < 5; ++i) {
+    rig.exchange({});
+    rig.link->sendFrame(FrameReport{});  // a status message each
+  }
+  rig.exchange({});
+  CHECK(rig.sentTimestamps.size() == 3);  // max - 2, max - 1, max
+  CHECK(rig.sentTimestamps.back() == kSigningMaxTimestamp);
+  CHECK(rig.increasing());
+  CHECK(rig.link->stats().txDropped == 3);
 }

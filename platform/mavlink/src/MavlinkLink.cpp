@@ -41,6 +41,8 @@ MavlinkLink::MavlinkLink(ByteStream& port, const Clock& clock, Reporter& reporte
                          const LinkConfig& config)
     : _port(port, clock, reporter), _clock(clock), _config(config), _signatures(config.key) {
   _startUs = _clock.nowUs();
+  _clockBase = config.signingTimestamp;
+  _clockBaseUs = _startUs;
 }
 
 bool MavlinkLink::transmit(uint32_t msgId, const uint8_t* payload, size_t len) {
@@ -50,21 +52,34 @@ bool MavlinkLink::transmit(uint32_t msgId, const uint8_t* payload, size_t len) {
   h.compId = _config.compId;
   h.msgId = msgId;
   uint8_t wire[kMaxFrameBytes];
+  uint64_t timestamp = 0;
+  if (_config.signing && !nextSigningTimestamp(&timestamp)) {
+    ++_port.stats().txDropped;  // past 2^48 - 1: dropped rather than wrapped
+    return false;
+  }
   const size_t n = _config.signing ? encodeSignedFrame(h, payload, len, _config.key, _config.linkId,
-                                                       nextSigningTimestamp(), wire, sizeof wire)
+                                                       timestamp, wire, sizeof wire)
                                    : encodeFrame(h, payload, len, wire, sizeof wire);
   return n > 0 && _port.send(wire, n);
 }
 
-// The wall clock's time as the link's clock moves it on, never behind what we signed or
-// saw last (the spec's rule for a system whose clock is not set).
-uint64_t MavlinkLink::nextSigningTimestamp() {
-  uint64_t t = _config.signingTimestamp + (_clock.nowUs() - _startUs) / 10;
+// Our clock in signing units: the wall clock's time at start (or the first timestamp we
+// believed, on a board whose clock is not set) moved on by the link's clock.
+uint64_t MavlinkLink::signingClock() const {
+  return _clockBase + (_clock.nowUs() - _clockBaseUs) / 10;
+}
+
+// Our clock, never behind what we signed or saw last (the spec's rule for a system whose
+// clock is not set), never past 2^48 - 1: false then, nothing is signed.
+bool MavlinkLink::nextSigningTimestamp(uint64_t* out) {
+  uint64_t t = signingClock();
   if (t <= _lastSignedTimestamp) t = _lastSignedTimestamp + 1;
   if (t <= _signatures.newest()) t = _signatures.newest() + 1;
+  if (t > kSigningMaxTimestamp) return false;
   _lastSignedTimestamp = t;
   _signatures.noteTimestamp(t);
-  return t;
+  *out = t;
+  return true;
 }
 
 void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
@@ -170,9 +185,16 @@ void MavlinkLink::handle(const Message& m, LinkControl& control) {
                                : addressing(ci.targetSystem, ci.targetComponent);
   if (to == Addressing::NotOurs) return;
   // With a key: unsigned, badly signed and replayed commands are not obeyed, not answered.
-  if (_config.signing && _signatures.check(m) != SignatureCheck::Good) {
-    ++_port.stats().rxRefused;
-    return;
+  if (_config.signing) {
+    const bool clockKnown = _clockBase != 0;
+    if (_signatures.check(m, clockKnown ? signingClock() : 0) != SignatureCheck::Good) {
+      ++_port.stats().rxRefused;
+      return;
+    }
+    if (!clockKnown) {  // a board whose clock is not set: the first believable time is ours
+      _clockBase = _signatures.newest();
+      _clockBaseUs = _clock.nowUs();
+    }
   }
   if (!accepted(m.header.sysId)) {  // a stranger: no answer, it learns nothing
     ++_port.stats().rxRefused;

@@ -112,7 +112,8 @@ class MavlinkLink final : public TrackLink {
   void sendStatus(const FrameReport& r);
   void sendLandingTarget(const FrameReport& r);
 
-  uint64_t nextSigningTimestamp();
+  uint64_t signingClock() const;
+  bool nextSigningTimestamp(uint64_t* out);
 
   QueuedPort _port;
   const Clock& _clock;
@@ -121,6 +122,8 @@ class MavlinkLink final : public TrackLink {
   uint32_t _errorsCounted{0};  // of the parser's errors, already in rx-errors
   SignatureChecker _signatures;
   uint64_t _lastSignedTimestamp{0};
+  uint64_t _clockBase{0};  // signing units at _clockBaseUs; 0: our clock is not known
+  uint64_t _clockBaseUs{0};
   uint8_t _rx[kRxBufferBytes]{};
   uint8_t _seq{0};
   bool _heartbeatSent{false};
