@@ -641,6 +641,7 @@ TEST_CASE("MavlinkLink: a peer that stops reading never blocks; drops are counte
   rig.cable.setCapacityAtoB(FakeSerialCable::kRingBytes);
   rig.link.drain(10);
   rig.read();
+  rig.clock.advanceUs(1000000);  // the output budget refilled
   rig.link.sendFrame(rig.frame(CTP_STATE_IDLE, 33333u * 50));
   const auto ms = rig.read();
   REQUIRE(ms.size() == 1);
@@ -757,4 +758,50 @@ TEST_CASE("signing: our timestamps never reach 2^48; what cannot be signed is dr
   CHECK(rig.sentTimestamps.back() == kSigningMaxTimestamp);
   CHECK(rig.increasing());
   CHECK(rig.link->stats().txDropped == 3);
+}
+
+TEST_CASE("output paced to the link's rate: answers wait, telemetry without room is dropped") {
+  FakeClock clock(5000);
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  LinkConfig config;
+  config.outputBytesPerS = 11520;  // 115200 baud
+  MavlinkLink link(cable.a(), clock, reporter, config);
+  Control control;
+  std::vector<uint8_t> commands;
+  for (int i = 0; i < 80; ++i) {
+    const auto c = commandFrame(static_cast<uint16_t>(40000 + i), {});  // UNSUPPORTED
+    commands.insert(commands.end(), c.begin(), c.end());
+  }
+  REQUIRE(cable.b().write(commands.data(), commands.size()).bytes == commands.size());
+  Parser host;
+  std::vector<uint16_t> answered;
+  size_t mostBytesAfterFirst = 0, firstBytes = 0;
+  int statusSent = 0;
+  for (int frame = 0; frame < 30 && answered.size() < 80; ++frame) {
+    link.poll(control, LinkStatus{});
+    FrameReport r;
+    r.widthPx = 640;
+    r.heightPx = 480;
+    r.track.time_us = 33333u * static_cast<uint64_t>(frame);
+    link.sendFrame(r);  // a status a frame: dropped while answers wait
+    uint8_t buf[4096];
+    const IoResult got = cable.b().read(buf, sizeof buf, 0);
+    (frame == 0 ? firstBytes : mostBytesAfterFirst) =
+        std::max(frame == 0 ? firstBytes : mostBytesAfterFirst, got.bytes);
+    for (size_t i = 0; i < got.bytes; ++i) {
+      Message m;
+      if (!host.push(buf[i], &m)) continue;
+      if (m.header.msgId == kMsgCommandAck) answered.push_back(unpackCommandAck(m.payload).command);
+      statusSent += m.header.msgId == kMsgCameraTrackingImageStatus;
+    }
+    clock.advanceUs(33333);
+  }
+  REQUIRE(answered.size() == 80);  // every answer, in order
+  for (size_t i = 0; i < answered.size(); ++i) CHECK(answered[i] == 40000 + i);
+  CHECK(firstBytes <= 11520 / 20 + kMaxFrameBytes);           // the burst: 50 ms of the rate
+  CHECK(mostBytesAfterFirst <= 11520 / 30 + kMaxFrameBytes);  // then a frame's worth
+  const LinkStats& s = link.stats();
+  CHECK(s.txDropped > 0);  // the statuses that found answers waiting
+  CHECK(s.sent == 80 + 1 + static_cast<uint32_t>(statusSent));  // ACKs, a heartbeat, statuses
 }

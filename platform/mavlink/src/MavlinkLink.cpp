@@ -1,5 +1,6 @@
 #include "cuetrack/platform/mavlink/MavlinkLink.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -43,6 +44,54 @@ MavlinkLink::MavlinkLink(ByteStream& port, const Clock& clock, Reporter& reporte
   _startUs = _clock.nowUs();
   _clockBase = config.signingTimestamp;
   _clockBaseUs = _startUs;
+  _budgetUs = _startUs;
+  _budgetBytes = 1e300;  // full: clipped to the burst at the first refill
+}
+
+bool MavlinkLink::affordable(uint32_t msgId) {
+  const double rate = static_cast<double>(_config.outputBytesPerS);
+  const double overhead = _port.datagrams() ? static_cast<double>(kUdpOverheadBytes) : 0.;
+  const double frameMax = static_cast<double>(kMaxFrameBytes) + overhead;
+  const double cap = std::max(rate * static_cast<double>(kBurstUs) * 1e-6, frameMax);
+  const uint64_t now = _clock.nowUs();
+  _budgetBytes = std::min(cap, _budgetBytes + rate * static_cast<double>(now - _budgetUs) * 1e-6);
+  _budgetUs = now;
+  const MessageInfo* info = messageInfo(msgId);
+  const double worst = static_cast<double>(kHeaderBytes + (info ? info->payloadBytes : 0) +
+                                           kCrcBytes + (_config.signing ? kSignatureBytes : 0)) +
+                       overhead;
+  return _budgetBytes >= worst;
+}
+
+// A message that cannot go out: counted, and its seq skipped (the receiver sees the gap).
+void MavlinkLink::dropped() {
+  ++_seq;
+  ++_port.stats().txDropped;
+}
+
+bool MavlinkLink::telemetryFits(uint32_t msgId) {
+  return _answerCount == 0 && !_infoWaiting && affordable(msgId);
+}
+
+// The answers waiting, oldest first, then CAMERA_INFORMATION once however many asked.
+void MavlinkLink::pump(bool paced) {
+  while (_answerCount > 0 && (!paced || affordable(kMsgCommandAck))) {
+    const Answer a = _answers[_answerHead];
+    _answerHead = (_answerHead + 1) % kMaxWaitingAnswers;
+    --_answerCount;
+    transmitAck(a.command, a.result, a.sysId, a.compId);
+  }
+  if (_answerCount == 0 && _infoWaiting && (!paced || affordable(kMsgCameraInformation))) {
+    _infoWaiting = false;
+    _infoSentThisPoll = true;
+    sendCameraInformation();
+  }
+}
+
+// At exit: what waits goes out at once, then the queue drains.
+bool MavlinkLink::drain(int maxMs) {
+  pump(false);
+  return _port.drain(maxMs);
 }
 
 bool MavlinkLink::transmit(uint32_t msgId, const uint8_t* payload, size_t len) {
@@ -60,6 +109,7 @@ bool MavlinkLink::transmit(uint32_t msgId, const uint8_t* payload, size_t len) {
   const size_t n = _config.signing ? encodeSignedFrame(h, payload, len, _config.key, _config.linkId,
                                                        timestamp, wire, sizeof wire)
                                    : encodeFrame(h, payload, len, wire, sizeof wire);
+  _budgetBytes -= static_cast<double>(n + (_port.datagrams() ? kUdpOverheadBytes : 0));
   return n > 0 && _port.send(wire, n);
 }
 
@@ -84,6 +134,8 @@ bool MavlinkLink::nextSigningTimestamp(uint64_t* out) {
 
 void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
   if (_port.service()) _parser.reset();
+  _infoSentThisPoll = false;
+  pump();  // answers waiting from before go first
   if (_port.datagrams()) {
     pollDatagrams(control);
   } else {
@@ -91,9 +143,10 @@ void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
   }
   const uint64_t now = _clock.nowUs();
   if (_port.connected() && (!_heartbeatSent || now - _lastHeartbeatUs >= kHeartbeatPeriodUs)) {
-    sendHeartbeat(status);
-    _heartbeatSent = true;
-    _lastHeartbeatUs = now;
+    if (sendHeartbeat(status)) {  // else it waits for room, tried again next poll
+      _heartbeatSent = true;
+      _lastHeartbeatUs = now;
+    }
   }
 }
 
@@ -238,8 +291,9 @@ void MavlinkLink::handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t f
       break;
     case kCmdRequestMessage:
       if (c.param[0] == static_cast<float>(kMsgCameraInformation)) {
-        sendAck(c.command, kResultAccepted, fromSys, fromComp);  // the ACK comes first
-        sendCameraInformation();
+        // After the ACK; once a poll however many asked (one message serves them all).
+        if (!_infoSentThisPoll) _infoWaiting = true;
+        sendAck(c.command, kResultAccepted, fromSys, fromComp);
         return;
       }
       result = kResultDenied;  // a message we do not send on request
@@ -316,7 +370,20 @@ uint8_t MavlinkLink::setInterval(const CommandLong& c) {
   return kResultAccepted;
 }
 
+// Every answer waits its turn (the output rate); only when kMaxWaitingAnswers wait is one
+// dropped, and counted.
 void MavlinkLink::sendAck(uint16_t command, uint8_t result, uint8_t toSys, uint8_t toComp) {
+  if (_answerCount == kMaxWaitingAnswers) {
+    dropped();
+    return;
+  }
+  _answers[(_answerHead + _answerCount) % kMaxWaitingAnswers] =
+      Answer{command, result, toSys, toComp};
+  ++_answerCount;
+  pump();
+}
+
+void MavlinkLink::transmitAck(uint16_t command, uint8_t result, uint8_t toSys, uint8_t toComp) {
   CommandAck a;
   a.command = command;
   a.result = result;
@@ -328,7 +395,8 @@ void MavlinkLink::sendAck(uint16_t command, uint8_t result, uint8_t toSys, uint8
 
 // system_status: BOOT while no camera, ACTIVE while a target is tracked, else STANDBY;
 // custom_mode: cuetrack's own state (CTP_STATE_*), | 0x100 while no camera.
-void MavlinkLink::sendHeartbeat(const LinkStatus& status) {
+bool MavlinkLink::sendHeartbeat(const LinkStatus& status) {
+  if (!telemetryFits(kMsgHeartbeat)) return false;
   Heartbeat h;
   h.type = kMavTypeCamera;
   h.autopilot = kMavAutopilotInvalid;
@@ -338,6 +406,7 @@ void MavlinkLink::sendHeartbeat(const LinkStatus& status) {
   h.customMode = status.state | (status.noCamera ? 0x100u : 0u);
   uint8_t p[16];
   transmit(kMsgHeartbeat, p, pack(h, p));
+  return true;
 }
 
 void MavlinkLink::sendCameraInformation() {
@@ -370,6 +439,10 @@ void MavlinkLink::sendFrame(const FrameReport& r) {
 // reads the box without the status steers at where the target was last seen, never at the
 // search's windows; NaN while idle or before any box.
 void MavlinkLink::sendStatus(const FrameReport& r) {
+  if (!telemetryFits(kMsgCameraTrackingImageStatus)) {  // stale by the next frame: dropped
+    dropped();
+    return;
+  }
   CameraTrackingImageStatus s;
   s.targetData = kTrackingTargetDataInStatus;
   s.pointX = s.pointY = s.radius = kNaN;
@@ -401,6 +474,10 @@ void MavlinkLink::sendStatus(const FrameReport& r) {
 }
 
 void MavlinkLink::sendLandingTarget(const FrameReport& r) {
+  if (!telemetryFits(kMsgLandingTarget)) {
+    dropped();
+    return;
+  }
   const ctp_track_t& t = r.track;
   const CameraIntrinsics& k = r.intrinsics;
   const float uPx = static_cast<float>(t.box_px[0]) + 0.5f * static_cast<float>(t.box_px[2]);

@@ -31,6 +31,10 @@ namespace cuetrack::platform::mavlink {
 
 struct LinkConfig {
   static constexpr int kMaxAcceptedSysIds = 8;
+  // A UDP ground station's default output rate: about a 921600-baud line. A burst at this
+  // rate (50 ms of it, a hundred small datagrams) fits an ordinary receive buffer (208 KB
+  // by default on Linux, about 260 datagrams).
+  static constexpr uint32_t kDefaultOutputBytesPerS = 100000;
   uint8_t sysId = 1;                  // the vehicle's system id (the autopilot's, usually 1)
   uint8_t compId = kMavCompIdCamera;  // our component id
   // Commands are obeyed only from these senders' system ids (--mavlink-accept-sysid);
@@ -45,6 +49,9 @@ struct LinkConfig {
   // The signing timestamp at construction (10 us units since 2015-01-01, from the wall
   // clock; 0 when it is not known): then moved on by the link's clock.
   uint64_t signingTimestamp = 0;
+  // The link's output rate [bytes/s] (--mavlink-rate; on serial the app gives the baud
+  // rate / 10): answers wait for it, telemetry that finds no room is dropped and counted.
+  uint32_t outputBytesPerS = kDefaultOutputBytesPerS;
   CameraMount mount{};
   // LANDING_TARGET with x, y, z in MAV_FRAME_BODY_FRD (ArduPilot); false: angles and
   // distance only, position_valid 0 (PX4 reads only that, as an IRLock-style report).
@@ -60,6 +67,11 @@ class MavlinkLink final : public TrackLink {
   static constexpr int kMaxDatagramsPerPoll = 256;
   static constexpr size_t kMaxRxBytesPerPoll = 128 * 1024;
   static constexpr size_t kRxBufferBytes = 65535;  // the largest UDP datagram
+  // Output pacing: the budget holds at most this much of the rate (and one whole frame),
+  // so a burst of answers leaves over several polls rather than at once.
+  static constexpr uint64_t kBurstUs = 50000;
+  static constexpr size_t kUdpOverheadBytes = 28;  // IPv4 and UDP headers, per datagram
+  static constexpr int kMaxWaitingAnswers = 256;   // ACKs waiting for the rate; more dropped
 
   MavlinkLink(ByteStream& port, const Clock& clock, Reporter& reporter, const LinkConfig& config);
 
@@ -67,7 +79,7 @@ class MavlinkLink final : public TrackLink {
   void poll(LinkControl& control, const LinkStatus& status) override;
   void sendFrame(const FrameReport& report) override;
   void answerStart(uint32_t token, StartOutcome outcome) override;
-  bool drain(int maxMs) override { return _port.drain(maxMs); }
+  bool drain(int maxMs) override;
   bool connected() const override { return _port.connected(); }
   const LinkStats& stats() const override { return _port.stats(); }
 
@@ -106,11 +118,21 @@ class MavlinkLink final : public TrackLink {
                         LinkControl& control);
   uint8_t setInterval(const CommandLong& c);
   bool transmit(uint32_t msgId, const uint8_t* payload, size_t len);
+  bool affordable(uint32_t msgId);     // the budget holds msgId's largest frame
+  bool telemetryFits(uint32_t msgId);  // no answer waits, and affordable
+  void dropped();
+  void pump(bool paced = true);  // waiting answers out, as the budget allows
   void sendAck(uint16_t command, uint8_t result, uint8_t toSys, uint8_t toComp);
-  void sendHeartbeat(const LinkStatus& status);
+  void transmitAck(uint16_t command, uint8_t result, uint8_t toSys, uint8_t toComp);
+  bool sendHeartbeat(const LinkStatus& status);
   void sendCameraInformation();
   void sendStatus(const FrameReport& r);
   void sendLandingTarget(const FrameReport& r);
+
+  struct Answer {
+    uint16_t command;
+    uint8_t result, sysId, compId;
+  };
 
   uint64_t signingClock() const;
   bool nextSigningTimestamp(uint64_t* out);
@@ -134,6 +156,12 @@ class MavlinkLink final : public TrackLink {
   uint8_t _trackingMode{kTrackingModeNone};
   Interval _statusInterval{}, _landingInterval{};
   int _widthPx{0}, _heightPx{0};  // of the last frame, for CAMERA_INFORMATION
+  Answer _answers[kMaxWaitingAnswers]{};
+  int _answerHead{0}, _answerCount{0};
+  bool _infoWaiting{false};  // CAMERA_INFORMATION, once after the ACKs waiting
+  bool _infoSentThisPoll{false};
+  double _budgetBytes{0.};
+  uint64_t _budgetUs{0};
 };
 
 }  // namespace cuetrack::platform::mavlink
