@@ -135,18 +135,19 @@ bool MavlinkLink::nextSigningTimestamp(uint64_t* out) {
 void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
   if (_port.service()) _parser.reset();
   _infoSentThisPoll = false;
-  pump();  // answers waiting from before go first
-  if (_port.datagrams()) {
-    pollDatagrams(control);
-  } else {
-    pollBytes(control);
-  }
+  // The heartbeat first: a stream of answers waiting must not starve it.
   const uint64_t now = _clock.nowUs();
   if (_port.connected() && (!_heartbeatSent || now - _lastHeartbeatUs >= kHeartbeatPeriodUs)) {
     if (sendHeartbeat(status)) {  // else it waits for room, tried again next poll
       _heartbeatSent = true;
       _lastHeartbeatUs = now;
     }
+  }
+  pump();  // then the answers waiting from before
+  if (_port.datagrams()) {
+    pollDatagrams(control);
+  } else {
+    pollBytes(control);
   }
 }
 
@@ -396,7 +397,7 @@ void MavlinkLink::transmitAck(uint16_t command, uint8_t result, uint8_t toSys, u
 // system_status: BOOT while no camera, ACTIVE while a target is tracked, else STANDBY;
 // custom_mode: cuetrack's own state (CTP_STATE_*), | 0x100 while no camera.
 bool MavlinkLink::sendHeartbeat(const LinkStatus& status) {
-  if (!telemetryFits(kMsgHeartbeat)) return false;
+  if (!affordable(kMsgHeartbeat)) return false;
   Heartbeat h;
   h.type = kMavTypeCamera;
   h.autopilot = kMavAutopilotInvalid;

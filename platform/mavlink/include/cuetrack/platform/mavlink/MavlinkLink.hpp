@@ -10,7 +10,9 @@
 //        Only from the accepted system ids (when given); broadcasts only where the camera
 //        protocol allows them; the rest refused without an answer and counted.
 // Over a datagram stream (UDP) each datagram is parsed on its own, and every poll reads
-// the datagrams waiting, up to a bound that keeps the frame rate.
+// the datagrams waiting, up to a bound that keeps the frame rate. Output is paced to the
+// link's rate (LinkConfig::outputBytesPerS): answers wait in a queue, telemetry that finds
+// no room is dropped and counted, the heartbeat waits for room.
 // docs/mavlink.md describes every field.
 #pragma once
 
