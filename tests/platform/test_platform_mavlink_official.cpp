@@ -287,7 +287,7 @@ TEST_CASE("resync against the official parser: every frame it decodes ours decod
   // case on a fresh parser of both. The official parser does not backtrack: after a false
   // header it skips what the header claims, so it loses commands ours keeps; said below.
 #if defined(__SANITIZE_ADDRESS__) || defined(__aarch64__) || defined(__arm__)
-  constexpr uint32_t kCases = 2000;  // AddressSanitizer and qemu are 10-30 times slower
+  constexpr uint32_t kCases = 2000;  // AddressSanitizer and qemu are about 12 times slower
 #else
   constexpr uint32_t kCases = 10000;
 #endif
