@@ -196,6 +196,7 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
                  "0.1,0,-0.05", "--mavlink-landing", "angles"},
                 &o, &err) == ParseResult::Run);
   CHECK_FALSE(o.landingPosition);
+  CHECK(o.mavlinkRateBytesPerS == 0);  // the link's default
   CHECK(o.protocol == Protocol::Mavlink);
   CHECK(o.mavSysId == 7);
   CHECK(o.mavCompId == 101);
@@ -206,6 +207,10 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
   REQUIRE(parse({"--protocol", "mavlink", "--mavlink-udp", "127.0.0.1:14550"}, &o, &err) ==
           ParseResult::Run);
   CHECK(std::string(o.mavlinkUdp) == "127.0.0.1:14550");
+  REQUIRE(parse({"--protocol", "mavlink", "--mavlink-udp", "127.0.0.1:14550", "--mavlink-rate",
+                 "20000"},
+                &o, &err) == ParseResult::Run);
+  CHECK(o.mavlinkRateBytesPerS == 20000);
   REQUIRE(parse({"--serial", "x", "--protocol", "mavlink", "--mavlink-key", "k.bin"}, &o, &err) ==
           ParseResult::Run);
   CHECK(std::string(o.mavlinkKey) == "k.bin");
@@ -241,6 +246,9 @@ TEST_CASE("--protocol mavlink and its settings; each refused alone or out of ran
       {{"--serial", "x", "--protocol", "mavlink", "--mavlink-landing", "ned"},
        "--mavlink-landing ned: expected frd or angles"},
       {{"--serial", "x", "--mavlink-landing", "angles"}, "--mavlink-landing needs --protocol"},
+      {{"--serial", "x", "--protocol", "mavlink", "--mavlink-rate", "10"},
+       "--mavlink-rate 10: expected bytes a second"},
+      {{"--serial", "x", "--mavlink-rate", "5000"}, "--mavlink-rate needs --protocol"},
       {{"--serial", "x", "--mavlink-accept-sysid", "1"}, "--mavlink-accept-sysid needs --protocol"},
       {{"--serial", "x", "--mavlink-key", "k"}, "--mavlink-key needs --protocol"},
       {{"--serial", "x", "--protocol", "mavlink", "--mavlink-accept-sysid", "0"},

@@ -16,3 +16,11 @@ target_include_directories(fuzz_mavlink_parser PRIVATE ${CMAKE_SOURCE_DIR}/platf
   ${CMAKE_SOURCE_DIR}/platform/common/include ${CMAKE_SOURCE_DIR}/platform/fake/include
   ${CMAKE_SOURCE_DIR}/platform/protocol)
 target_link_libraries(fuzz_mavlink_parser PRIVATE cuetrack::core_headers)
+#   fuzz_mavlink_resync: any bytes followed by a valid command; the oracle is that the
+#                        command is decoded on a byte stream and in a datagram, and every
+#                        byte is accounted for (issue 56).
+cuetrack_add_fuzzer(mavlink_resync SOURCES ${CMAKE_CURRENT_LIST_DIR}/mavlink/fuzz_mavlink_resync.cpp
+  ${_mav}/MavlinkCodec.cpp ${_mav}/MavlinkMessages.cpp)
+target_include_directories(fuzz_mavlink_resync PRIVATE ${CMAKE_SOURCE_DIR}/platform/mavlink/include
+  ${CMAKE_SOURCE_DIR}/platform/common/include ${CMAKE_SOURCE_DIR}/platform/protocol)
+target_link_libraries(fuzz_mavlink_resync PRIVATE cuetrack::core_headers)

@@ -14,11 +14,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <future>
 #include <string>
 
 #include "LoopbackUdp.hpp"
+#include "TempDir.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
+#include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 #include "cuetrack/platform/linux/UdpSocket.hpp"
@@ -228,4 +232,54 @@ TEST_CASE("UdpSocket: one datagram per write to a loopback peer, replies read ba
   UdpSocket bad;
   CHECK_FALSE(bad.open("127.0.0.1"));
   CHECK(std::string(bad.error()) == "udp:127.0.0.1: expected HOST:PORT");
+}
+
+TEST_CASE("a key file that is a FIFO is refused at once, in one line (issue 56, 2)") {
+  cuetrack::test::TempDir tmp;
+  const std::string fifo = tmp / "key";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  auto reading = std::async(std::launch::async, [&] {
+    uint8_t key[32];
+    char err[512] = "";
+    const bool ok = readKeyFile(fifo.c_str(), key, sizeof key, err, sizeof err);
+    return std::make_pair(ok, std::string(err));
+  });
+  // Bounded: a reader that blocks in open() is released by opening the write end, so the
+  // old behaviour fails here rather than hanging the test.
+  const bool answered = reading.wait_for(std::chrono::seconds(5)) == std::future_status::ready;
+  if (!answered) {
+    const int w = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+    if (w >= 0) ::close(w);
+  }
+  CHECK(answered);
+  const auto [ok, err] = reading.get();
+  CHECK_FALSE(ok);
+  CHECK(err == fifo + ": not a regular file");
+}
+
+TEST_CASE("an all-zero or repeated-byte key is refused; a real one is read") {
+  cuetrack::test::TempDir tmp;
+  const std::string path = tmp / "key";
+  auto tryKey = [&](const std::string& bytes, std::string* err) {
+    FILE* f = std::fopen(path.c_str(), "wb");
+    REQUIRE(f != nullptr);
+    REQUIRE(std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size());
+    std::fclose(f);
+    REQUIRE(::chmod(path.c_str(), 0600) == 0);
+    uint8_t key[32];
+    char e[512] = "";
+    const bool ok = readKeyFile(path.c_str(), key, sizeof key, e, sizeof e);
+    *err = e;
+    return ok;
+  };
+  std::string err;
+  CHECK_FALSE(tryKey(std::string(32, '\0'), &err));
+  CHECK(err == path +
+                   ": the key is one byte (0x00) repeated: not a secret; make one with head -c 32 "
+                   "/dev/urandom");
+  CHECK_FALSE(tryKey(std::string(32, 'A'), &err));
+  CHECK(err.find("(0x41) repeated") != std::string::npos);
+  std::string good(32, 'A');
+  good[31] = 'B';
+  CHECK(tryKey(good, &err));
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -186,9 +187,15 @@ TEST_CASE("the parser counts bad frames, skips noise and others' messages, and r
   const auto got = parseAll(stream, parser);
   CHECK(got.size() == 2);  // the good frame after the false start, and the last one
   CHECK(parser.stats().messages == 2);
-  CHECK(parser.stats().badCrc == 1);    // the corrupt copy
-  CHECK(parser.stats().badFrame == 2);  // the false start (0xFD as flags), the unknown flag
+  CHECK(parser.stats().badCrc() == 1);  // the corrupt copy
+  // The noise and the false start (0xFD as flags) in one run, the unknown flag.
+  CHECK(parser.stats().badUnknown() == 2);
+  CHECK(parser.stats().badLength() == 0);
   CHECK(parser.stats().ignored == 1);
+  // Every byte is in a message, the ignored frame, or counted as discarded.
+  const ParserStats& s = parser.stats();
+  CHECK(s.discardedBytes[0] + s.discardedBytes[1] + s.discardedBytes[2] + 2 * good.size() + 15 ==
+        stream.size());
 }
 
 TEST_CASE("a signed frame is read (its signature skipped)") {
@@ -202,7 +209,7 @@ TEST_CASE("a signed frame is read (its signature skipped)") {
   for (size_t i = 0; i < kSignatureBytes; ++i) w.push_back(static_cast<uint8_t>(i));
   Parser parser;
   CHECK(parseAll(w, parser).size() == 1);
-  CHECK(parser.stats().badCrc == 0);
+  CHECK(parser.stats().totalErrors() == 0);
 }
 
 TEST_CASE("SHA-256: the FIPS 180-4 examples, whole and in pieces") {
@@ -248,18 +255,18 @@ TEST_CASE("signing: our signed frame checks with the key, not without; replays r
     return m;
   };
   SignatureChecker checker(key);
-  CHECK(checker.check(parse(w, n)) == SignatureCheck::Good);
-  CHECK(checker.check(parse(w, n)) == SignatureCheck::Replayed);
+  CHECK(checker.check(parse(w, n), 0) == SignatureCheck::Good);
+  CHECK(checker.check(parse(w, n), 0) == SignatureCheck::Replayed);
   SigningKey other;
   SignatureChecker stranger(other);
-  CHECK(stranger.check(parse(w, n)) == SignatureCheck::BadSignature);
+  CHECK(stranger.check(parse(w, n), 0) == SignatureCheck::BadSignature);
   uint8_t plain[kMaxFrameBytes];
   const size_t k = encodeFrame(h, p, len, plain, sizeof plain);
-  CHECK(checker.check(parse(plain, k)) == SignatureCheck::Unsigned);
+  CHECK(checker.check(parse(plain, k), 0) == SignatureCheck::Unsigned);
   // A new stream a minute older than the newest timestamp known: refused.
   SignatureChecker fresh(key);
   fresh.noteTimestamp(123456789 + kSigningNewStreamSlack + 1);
-  CHECK(fresh.check(parse(w, n)) == SignatureCheck::TooOld);
+  CHECK(fresh.check(parse(w, n), 0) == SignatureCheck::TooOld);
 }
 
 TEST_CASE("camera mount: forward by default, pitch -90 looks down, offset added") {
@@ -634,8 +641,167 @@ TEST_CASE("MavlinkLink: a peer that stops reading never blocks; drops are counte
   rig.cable.setCapacityAtoB(FakeSerialCable::kRingBytes);
   rig.link.drain(10);
   rig.read();
+  rig.clock.advanceUs(1000000);  // the output budget refilled
   rig.link.sendFrame(rig.frame(CTP_STATE_IDLE, 33333u * 50));
   const auto ms = rig.read();
   REQUIRE(ms.size() == 1);
   CHECK(ms[0].header.seq == 100);  // every message took a seq, sent or not
+}
+
+namespace {
+
+// A signed STOP_TRACKING from the ground station (255/190, link 1) with this timestamp.
+std::vector<uint8_t> signedStop(const SigningKey& key, uint64_t timestamp) {
+  CommandLong c;
+  c.command = kCmdCameraStopTracking;
+  c.targetSystem = 1;
+  c.targetComponent = 100;
+  uint8_t p[40];
+  Header h;
+  h.sysId = 255;
+  h.compId = 190;
+  h.msgId = kMsgCommandLong;
+  std::vector<uint8_t> w(kMaxFrameBytes);
+  w.resize(encodeSignedFrame(h, p, pack(c, p), key, 1, timestamp, w.data(), w.size()));
+  return w;
+}
+
+uint64_t timestampOf(const Message& m) {
+  uint64_t t = 0;
+  for (int i = 0; i < 6; ++i) t |= static_cast<uint64_t>(m.signature[1 + i]) << (8 * i);
+  return t;
+}
+
+// A signing link whose clock reads `clock` (signing units; 0: not set) at start.
+struct SignedRig {
+  FakeClock clock{5000};
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  SigningKey key;
+  std::unique_ptr<MavlinkLink> link;
+  Control control;
+  Parser host;
+  std::vector<uint64_t> sentTimestamps;  // of every frame the link sent, in order
+  explicit SignedRig(uint64_t clockTimestamp) {
+    for (int i = 0; i < 32; ++i) key.bytes[i] = static_cast<uint8_t>(3 * i + 1);
+    LinkConfig c;
+    c.signing = true;
+    c.key = key;
+    c.signingTimestamp = clockTimestamp;
+    link = std::make_unique<MavlinkLink>(cable.a(), clock, reporter, c);
+  }
+  // Polls with `in` waiting (if any); the ACKs the link answered.
+  int exchange(const std::vector<uint8_t>& in) {
+    if (!in.empty()) REQUIRE(cable.b().write(in.data(), in.size()).bytes == in.size());
+    link->poll(control, LinkStatus{});
+    int acks = 0;
+    uint8_t buf[512];
+    for (IoResult r; (r = cable.b().read(buf, sizeof buf, 0)).bytes > 0;)
+      for (size_t i = 0; i < r.bytes; ++i) {
+        Message m;
+        if (!host.push(buf[i], &m)) continue;
+        sentTimestamps.push_back(timestampOf(m));
+        acks += m.header.msgId == kMsgCommandAck;
+      }
+    return acks;
+  }
+  bool increasing() const {
+    for (size_t i = 1; i < sentTimestamps.size(); ++i)
+      if (sentTimestamps[i] <= sentTimestamps[i - 1]) return false;
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE(
+    "signing: a timestamp a minute ahead of our clock is refused, not adopted (issue 56, 3)") {
+  constexpr uint64_t kNow = 300000000000ull;  // about 2016
+  SignedRig rig(kNow);
+  rig.exchange({});  // the first heartbeat
+  // One correctly signed command at 2^48 - 3: refused and counted; our clock stays ours.
+  CHECK(rig.exchange(signedStop(rig.key, kSigningMaxTimestamp - 2)) == 0);
+  CHECK(rig.link->stats().rxRefused == 1);
+  rig.clock.advanceUs(1000000);
+  rig.exchange({});  // the next heartbeat
+  // 30 s ahead: within the minute, obeyed; two minutes ahead: refused.
+  CHECK(rig.exchange(signedStop(rig.key, kNow + 100000 + 3000000)) == 1);
+  CHECK(rig.exchange(signedStop(rig.key, kNow + 100000 + 12000000)) == 0);
+  CHECK(rig.link->stats().rxRefused == 2);
+  REQUIRE(rig.sentTimestamps.size() >= 3);
+  CHECK(rig.increasing());
+  // Never dragged towards 2^48: at most what we believed (30 s ahead) and a few steps.
+  CHECK(rig.sentTimestamps.back() < kNow + 100000 + 3000000 + 100);
+}
+
+TEST_CASE("signing on a board whose clock is not set: nothing after 2100 believed") {
+  SignedRig rig(0);
+  rig.exchange({});
+  CHECK(rig.exchange(signedStop(rig.key, kSigningMaxTimestamp - 2)) == 0);
+  constexpr uint64_t k2026 = 35000000000000ull;
+  CHECK(rig.exchange(signedStop(rig.key, k2026)) == 1);             // believed: now our clock
+  CHECK(rig.exchange(signedStop(rig.key, k2026 + 12000000)) == 0);  // 2 min ahead of it
+  CHECK(rig.link->stats().rxRefused == 2);
+  CHECK(rig.increasing());
+  CHECK(rig.sentTimestamps.back() > k2026);
+  CHECK(rig.sentTimestamps.back() < k2026 + 100);
+}
+
+TEST_CASE("signing: our timestamps never reach 2^48; what cannot be signed is dropped, counted") {
+  SignedRig rig(kSigningMaxTimestamp - 2);  // a clock set absurdly late
+  for (int i = 0; i < 5; ++i) {
+    rig.exchange({});
+    rig.link->sendFrame(FrameReport{});  // a status message each
+  }
+  rig.exchange({});
+  CHECK(rig.sentTimestamps.size() == 3);  // max - 2, max - 1, max
+  CHECK(rig.sentTimestamps.back() == kSigningMaxTimestamp);
+  CHECK(rig.increasing());
+  CHECK(rig.link->stats().txDropped == 3);
+}
+
+TEST_CASE("output paced to the link's rate: answers wait, telemetry without room is dropped") {
+  FakeClock clock(5000);
+  FakeSerialCable cable;
+  MemoryReporter reporter;
+  LinkConfig config;
+  config.outputBytesPerS = 11520;  // 115200 baud
+  MavlinkLink link(cable.a(), clock, reporter, config);
+  Control control;
+  std::vector<uint8_t> commands;
+  for (int i = 0; i < 80; ++i) {
+    const auto c = commandFrame(static_cast<uint16_t>(40000 + i), {});  // UNSUPPORTED
+    commands.insert(commands.end(), c.begin(), c.end());
+  }
+  REQUIRE(cable.b().write(commands.data(), commands.size()).bytes == commands.size());
+  Parser host;
+  std::vector<uint16_t> answered;
+  size_t mostBytesAfterFirst = 0, firstBytes = 0;
+  int statusSent = 0;
+  for (int frame = 0; frame < 30 && answered.size() < 80; ++frame) {
+    link.poll(control, LinkStatus{});
+    FrameReport r;
+    r.widthPx = 640;
+    r.heightPx = 480;
+    r.track.time_us = 33333u * static_cast<uint64_t>(frame);
+    link.sendFrame(r);  // a status a frame: dropped while answers wait
+    uint8_t buf[4096];
+    const IoResult got = cable.b().read(buf, sizeof buf, 0);
+    (frame == 0 ? firstBytes : mostBytesAfterFirst) =
+        std::max(frame == 0 ? firstBytes : mostBytesAfterFirst, got.bytes);
+    for (size_t i = 0; i < got.bytes; ++i) {
+      Message m;
+      if (!host.push(buf[i], &m)) continue;
+      if (m.header.msgId == kMsgCommandAck) answered.push_back(unpackCommandAck(m.payload).command);
+      statusSent += m.header.msgId == kMsgCameraTrackingImageStatus;
+    }
+    clock.advanceUs(33333);
+  }
+  REQUIRE(answered.size() == 80);  // every answer, in order
+  for (size_t i = 0; i < answered.size(); ++i) CHECK(answered[i] == 40000 + i);
+  CHECK(firstBytes <= 11520 / 20 + kMaxFrameBytes);           // the burst: 50 ms of the rate
+  CHECK(mostBytesAfterFirst <= 11520 / 30 + kMaxFrameBytes);  // then a frame's worth
+  const LinkStats& s = link.stats();
+  CHECK(s.txDropped > 0);  // the statuses that found answers waiting
+  CHECK(s.sent == 80 + 1 + static_cast<uint32_t>(statusSent));  // ACKs, a heartbeat, statuses
 }

@@ -15,7 +15,8 @@ namespace cuetrack::test {
 struct LoopbackUdp {
   int fd = -1;
   char target[32] = "";  // "127.0.0.1:PORT", for UdpSocket::open / --mavlink-udp
-  LoopbackUdp() {
+  // roomyBuffer false: the system's default receive buffer, as an ordinary ground station.
+  explicit LoopbackUdp(bool roomyBuffer = true) {
     fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
     REQUIRE(fd >= 0);
     sockaddr_in addr{};
@@ -23,7 +24,7 @@ struct LoopbackUdp {
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     // Room for a burst of answers (200 ACKs at once) before the test reads them.
     const int rcvBytes = 1 << 20;
-    ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &rcvBytes, sizeof rcvBytes);
+    if (roomyBuffer) ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &rcvBytes, sizeof rcvBytes);
     REQUIRE(::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
     socklen_t len = sizeof addr;
     REQUIRE(::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) == 0);

@@ -321,6 +321,11 @@ platform::TrackLink* makeLink(const AppOptions& opt, const uint8_t (&key)[32], O
     mc.mount.yawDeg = opt.mountDeg[2];
     for (int i = 0; i < 3; ++i) mc.mount.offsetM[i] = opt.mountOffsetM[i];
     mc.landingPosition = opt.landingPosition;
+    // The link's output rate: a serial line's own (10 bits a byte), else UDP's default.
+    if (opt.mavlinkRateBytesPerS > 0)
+      mc.outputBytesPerS = static_cast<uint32_t>(opt.mavlinkRateBytesPerS);
+    else if (!opt.mavlinkUdp)
+      mc.outputBytesPerS = static_cast<uint32_t>(opt.baud / 10);
     if (opt.mavlinkKey) {  // read before the run: errors said at once
       mc.signing = true;
       mc.signingTimestamp = platform::signingTimestampNow();

@@ -172,6 +172,15 @@ void declare(cli::Command& cmd, AppOptions* o) {
              "station's); others are refused and counted (default: from any system on the link)",
              sysIds(o))
       ->group(mavlink);
+  cmd.option("--mavlink-rate", "BYTES_PER_S",
+             "MAVLink output rate: answers wait for it, telemetry beyond it is dropped and "
+             "counted (default: --baud / 10 on --serial, 100000 over UDP)",
+             [o](const std::string& v) {
+               return cli::wholeNumber(v, 100, 100000000, &o->mavlinkRateBytesPerS).empty()
+                          ? ""
+                          : "expected bytes a second, 100..100000000";
+             })
+      ->group(mavlink);
   cmd.option("--mavlink-landing", "frd|angles", "LANDING_TARGET's form (below; default frd)",
              [o](const std::string& v) {
                if (v != "frd" && v != "angles") return "expected frd or angles";
@@ -239,8 +248,9 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
   out->useGroundTruth = !cmd.given("--no-gt");
   // The first --mavlink-* option on the command line.
   static const char* const kMavlinkOnly[] = {
-      "--mavlink-sysid", "--mavlink-compid", "--mavlink-mount",        "--mavlink-offset",
-      "--mavlink-udp",   "--mavlink-key",    "--mavlink-accept-sysid", "--mavlink-landing"};
+      "--mavlink-sysid",        "--mavlink-compid",  "--mavlink-mount",
+      "--mavlink-offset",       "--mavlink-udp",     "--mavlink-key",
+      "--mavlink-accept-sysid", "--mavlink-landing", "--mavlink-rate"};
   for (const CLI::Option* opt : cmd.app().parse_order()) {
     for (const char* name : kMavlinkOnly)
       if (!out->mavlinkOnlyOption && opt->get_name() == name) out->mavlinkOnlyOption = name;

@@ -48,6 +48,7 @@ struct AppOptions {
   int acceptSysIdCount = 0;                 // 0: from any system
   const char* mavlinkKey = nullptr;         // --mavlink-key FILE: MAVLink 2 signing
   bool landingPosition = true;              // --mavlink-landing frd (else angles)
+  long mavlinkRateBytesPerS = 0;            // --mavlink-rate: output [bytes/s]; 0: the default
   const char* mavlinkOnlyOption = nullptr;  // the first --mavlink-* option given
   bool show = false;                        // --show: live window (View.hpp, host only)
   bool select = false;                      // --select: drag the target box on frame 1

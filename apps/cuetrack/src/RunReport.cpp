@@ -32,10 +32,16 @@ void describeTarget(const AppOptions& opt, const char* groundTruthName, bool gro
 }
 
 // The link's counters in one clause, e.g. "serial sent 10 tx-dropped 0 rx 2 ...".
+// MAVLink's discarded bytes are split by reason after rx-errors (docs/mavlink.md).
 int formatLinkStats(const char* name, const platform::LinkStats& s, char* out, size_t n) {
-  return std::snprintf(out, n, "%s sent %u tx-dropped %u rx %u rx-errors %u refused %u", name,
+  char why[96] = "";
+  if (s.rxBadCrc + s.rxBadLength + s.rxBadUnknown > 0)
+    std::snprintf(why, sizeof why, " (crc %u, length %u, unknown %u)",
+                  static_cast<unsigned>(s.rxBadCrc), static_cast<unsigned>(s.rxBadLength),
+                  static_cast<unsigned>(s.rxBadUnknown));
+  return std::snprintf(out, n, "%s sent %u tx-dropped %u rx %u rx-errors %u%s refused %u", name,
                        static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
-                       static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors),
+                       static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors), why,
                        static_cast<unsigned>(s.rxRefused));
 }
 

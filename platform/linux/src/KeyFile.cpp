@@ -12,7 +12,9 @@
 namespace cuetrack::platform {
 
 bool readKeyFile(const char* path, uint8_t* out, size_t size, char* err, size_t errLen) {
-  const int fd = ::open(path, O_RDONLY | O_CLOEXEC);
+  // O_NONBLOCK: a FIFO or a device opens at once rather than waiting for a writer, and
+  // is then refused as not a regular file (a service pointed at one must say so, not hang).
+  const int fd = ::open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
   if (fd < 0) {
     std::snprintf(err, errLen, "%s: cannot read the key: %s", path, std::strerror(errno));
     return false;
@@ -31,6 +33,18 @@ bool readKeyFile(const char* path, uint8_t* out, size_t size, char* err, size_t 
     ok = ::read(fd, out, size) == static_cast<ssize_t>(size);
     if (!ok) std::snprintf(err, errLen, "%s: cannot read the key: %s", path, std::strerror(errno));
   }
+  if (ok && size > 0) {  // all zero, or one byte over and over: no secret at all
+    size_t same = 1;
+    while (same < size && out[same] == out[0]) ++same;
+    if (same == size) {
+      std::snprintf(err, errLen,
+                    "%s: the key is one byte (0x%02x) repeated: not a secret; make one with "
+                    "head -c %zu /dev/urandom",
+                    path, out[0], size);
+      ok = false;
+    }
+  }
+  if (!ok) std::memset(out, 0, size);
   ::close(fd);
   return ok;
 }

@@ -72,22 +72,30 @@ size_t encodeFrame(const Header& h, const uint8_t* payload, size_t len, uint8_t*
 
 namespace {
 
-// A frame at the start of buf (buf[0] is the start byte), judged on the n bytes there.
-enum class Check : uint8_t { NeedMore, Good, BadCrc, BadFrame, Ignored };
-Check checkFrame(const uint8_t* buf, size_t n, size_t* total) {
-  if (n >= 3 && (buf[2] & ~kIncompatSigned) != 0) return Check::BadFrame;
-  if (n < kHeaderBytes) return Check::NeedMore;
-  const size_t len = buf[1];
-  const MessageInfo* info = messageInfo(msgIdOf(buf));
-  if (info != nullptr && len > info->payloadBytes) return Check::BadFrame;
-  *total = kHeaderBytes + len + kCrcBytes + ((buf[2] & kIncompatSigned) ? kSignatureBytes : 0);
-  if (n < *total) return Check::NeedMore;
-  if (info == nullptr) return Check::Ignored;
-  uint16_t crc = crc16(buf + 1, kHeaderBytes - 1 + len);
-  crc = crcAccumulate(info->crcExtra, crc);
-  const uint16_t got =
-      static_cast<uint16_t>(buf[kHeaderBytes + len] | (buf[kHeaderBytes + len + 1] << 8));
-  return crc == got ? Check::Good : Check::BadCrc;
+// A header at w[0] (a start byte), judged on the n bytes there.
+enum class Head : uint8_t { NeedMore, BadFlags, TooLong, Known, Unknown };
+Head headOf(const uint8_t* w, size_t n, size_t* total, const MessageInfo** info) {
+  if (n >= 3 && (w[2] & ~kIncompatSigned) != 0) return Head::BadFlags;
+  if (n < kHeaderBytes) return Head::NeedMore;
+  const size_t len = w[1];
+  *info = messageInfo(msgIdOf(w));
+  if (*info != nullptr && len > (*info)->payloadBytes) return Head::TooLong;
+  *total = kHeaderBytes + len + kCrcBytes + ((w[2] & kIncompatSigned) ? kSignatureBytes : 0);
+  return *info != nullptr ? Head::Known : Head::Unknown;
+}
+
+bool crcGood(const uint8_t* w, const MessageInfo& info) {
+  const size_t len = w[1];
+  uint16_t crc = crc16(w + 1, kHeaderBytes - 1 + len);
+  crc = crcAccumulate(info.crcExtra, crc);
+  return crc == static_cast<uint16_t>(w[kHeaderBytes + len] | (w[kHeaderBytes + len + 1] << 8));
+}
+
+// The next start byte after w[0], or n.
+size_t nextStart(const uint8_t* w, size_t n) {
+  size_t k = 1;
+  while (k < n && w[k] != kStx) ++k;
+  return k;
 }
 
 void copyMessage(const uint8_t* buf, Message* out) {
@@ -109,65 +117,126 @@ void copyMessage(const uint8_t* buf, Message* out) {
 
 }  // namespace
 
-void Parser::resync() {
-  size_t k = 1;
-  while (k < _n && _buf[k] != kStx) ++k;
-  std::memmove(_buf, _buf + k, _n - k);
-  _n -= k;
+bool Parser::verified(const uint8_t* w, size_t n, uint64_t pos) {
+  size_t total = 0;
+  const MessageInfo* info = nullptr;
+  if (w[0] != kStx || headOf(w, n, &total, &info) != Head::Known || n < total) return false;
+  const size_t slot = pos % kCacheSlots;
+  if (_cachePos[slot] != pos + 1) {
+    _cachePos[slot] = pos + 1;
+    _cacheGood[slot] = crcGood(w, *info);
+  }
+  return _cacheGood[slot];
+}
+
+size_t Parser::verifiedIn(const uint8_t* w, size_t n, uint64_t pos, size_t from, size_t to) {
+  if (to > n) to = n;
+  for (size_t p = from; p < to; ++p)
+    if (w[p] == kStx && verified(w + p, n - p, pos + p)) return p;
+  return 0;
+}
+
+void Parser::discard(size_t bytes, Discard why) {
+  const int r = static_cast<int>(why);
+  _stats.discardedBytes[r] += bytes;
+  if (why != Discard::Unknown || !_inUnknownRun) ++_stats.errors[r];  // one run, one error
+  _inUnknownRun = why == Discard::Unknown;
+}
+
+Parser::Step Parser::step(const uint8_t* w, size_t n, uint64_t pos, bool final) {
+  const auto thrown = [&](Discard why) {
+    const size_t k = nextStart(w, n);  // the next start byte inside is tried next
+    discard(k, why);
+    return Step{Kind::Discarded, k};
+  };
+  if (w[0] != kStx) return thrown(Discard::Unknown);  // noise, MAVLink 1
+  size_t total = 0;
+  const MessageInfo* info = nullptr;
+  const Head h = headOf(w, n, &total, &info);
+  if (h == Head::BadFlags) return thrown(Discard::Unknown);
+  if (h == Head::TooLong) return thrown(Discard::Length);
+  if (h == Head::NeedMore) return final ? thrown(Discard::Length) : Step{Kind::NeedMore, 0};
+  if (h == Head::Known && n >= total) {
+    if (!verified(w, n, pos)) return thrown(Discard::Crc);
+    _stats.messageBytes += total;
+    _inUnknownRun = false;
+    return Step{Kind::Good, total};
+  }
+  // Unverifiable (an id we do not know) or not whole yet: its length is not trusted while
+  // a frame whose CRC checks starts inside it.
+  if (verifiedIn(w, n, pos, 1, total) != 0)
+    return thrown(h == Head::Known ? Discard::Length : Discard::Unknown);
+  if (n < total) return final ? thrown(Discard::Length) : Step{Kind::NeedMore, 0};
+  // A whole frame of an unknown id. On a stream, a frame starting inside it that is not
+  // whole yet may still check: wait for it, unless a checked frame after it (and so inside
+  // it) already shows it false.
+  if (!final) {
+    for (size_t p = 1; p < total; ++p) {
+      if (w[p] != kStx) continue;
+      size_t t = 0;
+      const MessageInfo* i = nullptr;
+      const Head hp = headOf(w + p, n - p, &t, &i);
+      if (hp == Head::NeedMore || (hp == Head::Known && n - p < t)) {
+        if (verifiedIn(w, n, pos, p + 1, n) == 0) return Step{Kind::NeedMore, 0};
+        break;
+      }
+    }
+  }
+  ++_stats.ignored;
+  _stats.ignoredBytes += total;
+  _inUnknownRun = false;
+  return Step{Kind::Foreign, total};
+}
+
+void Parser::reset() {
+  if (_n > 0) discard(_n, Discard::Length);  // a frame the lost line cut
+  _streamPos += _n;                          // positions are never reused: the cache stays right
+  _n = 0;
+  _inUnknownRun = false;
 }
 
 bool Parser::push(uint8_t byte, Message* out) {
-  if (_n == 0 && byte != kStx) return false;
-  _buf[_n++] = byte;
-  for (;;) {
-    size_t total = 0;
-    const Check c = checkFrame(_buf, _n, &total);
-    switch (c) {
-      case Check::NeedMore:
-        return false;
-      case Check::Ignored:
-        ++_stats.ignored;
-        _n = 0;
-        return false;
-      case Check::Good:
-        ++_stats.messages;
-        copyMessage(_buf, out);
-        _n = 0;
-        return true;
-      case Check::BadCrc:
-      case Check::BadFrame:
-        ++(c == Check::BadCrc ? _stats.badCrc : _stats.badFrame);
-        resync();  // the bytes kept may hold (the start of) a good frame: check them again
-        if (_n == 0) return false;
-        break;
-    }
+  if (_n == kWindowBytes) {  // cannot happen (step decides within a window); never overrun
+    discard(1, Discard::Unknown);
+    std::memmove(_buf, _buf + 1, --_n);
+    ++_streamPos;
   }
+  _buf[_n++] = byte;
+  return next(out);
+}
+
+bool Parser::next(Message* out) {
+  while (_n > 0) {
+    const Step s = step(_buf, _n, _streamPos, false);
+    if (s.kind == Kind::NeedMore) return false;
+    if (s.kind == Kind::Good) {
+      ++_stats.messages;
+      copyMessage(_buf, out);
+    }
+    std::memmove(_buf, _buf + s.bytes, _n - s.bytes);
+    _n -= s.bytes;
+    _streamPos += s.bytes;
+    if (s.kind == Kind::Good) return true;
+  }
+  return false;
 }
 
 bool Parser::nextInDatagram(const uint8_t* data, size_t n, size_t* offset, Message* out) {
+  if (*offset == 0) {  // a new datagram: its own positions, no run carried over
+    _datagramBase = _datagramPos;
+    _datagramPos += n + kCacheSlots;
+    _inUnknownRun = false;
+  }
   size_t at = *offset;
   while (at < n) {
-    if (data[at] != kStx) {  // noise, MAVLink 1: skipped, as on a byte stream
-      ++at;
-      continue;
-    }
-    size_t total = 0;
-    const Check c = checkFrame(data + at, n - at, &total);
-    if (c == Check::Good) {
+    const Step s = step(data + at, n - at, _datagramBase + at, true);
+    if (s.kind == Kind::Good) {
       ++_stats.messages;
       copyMessage(data + at, out);
-      *offset = at + total;
+      *offset = at + s.bytes;
       return true;
     }
-    if (c == Check::Ignored) {
-      ++_stats.ignored;
-      at += total;
-      continue;
-    }
-    // Bad, or cut by the datagram's end (nothing more will come for it): counted, and
-    // the next start byte inside it is tried, so a false start cannot hide a good frame.
-    ++(c == Check::BadCrc ? _stats.badCrc : _stats.badFrame);
-    ++at;
+    at += s.bytes;
   }
   *offset = n;
   return false;

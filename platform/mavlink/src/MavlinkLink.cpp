@@ -1,5 +1,6 @@
 #include "cuetrack/platform/mavlink/MavlinkLink.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -41,6 +42,56 @@ MavlinkLink::MavlinkLink(ByteStream& port, const Clock& clock, Reporter& reporte
                          const LinkConfig& config)
     : _port(port, clock, reporter), _clock(clock), _config(config), _signatures(config.key) {
   _startUs = _clock.nowUs();
+  _clockBase = config.signingTimestamp;
+  _clockBaseUs = _startUs;
+  _budgetUs = _startUs;
+  _budgetBytes = 1e300;  // full: clipped to the burst at the first refill
+}
+
+bool MavlinkLink::affordable(uint32_t msgId) {
+  const double rate = static_cast<double>(_config.outputBytesPerS);
+  const double overhead = _port.datagrams() ? static_cast<double>(kUdpOverheadBytes) : 0.;
+  const double frameMax = static_cast<double>(kMaxFrameBytes) + overhead;
+  const double cap = std::max(rate * static_cast<double>(kBurstUs) * 1e-6, frameMax);
+  const uint64_t now = _clock.nowUs();
+  _budgetBytes = std::min(cap, _budgetBytes + rate * static_cast<double>(now - _budgetUs) * 1e-6);
+  _budgetUs = now;
+  const MessageInfo* info = messageInfo(msgId);
+  const double worst = static_cast<double>(kHeaderBytes + (info ? info->payloadBytes : 0) +
+                                           kCrcBytes + (_config.signing ? kSignatureBytes : 0)) +
+                       overhead;
+  return _budgetBytes >= worst;
+}
+
+// A message that cannot go out: counted, and its seq skipped (the receiver sees the gap).
+void MavlinkLink::dropped() {
+  ++_seq;
+  ++_port.stats().txDropped;
+}
+
+bool MavlinkLink::telemetryFits(uint32_t msgId) {
+  return _answerCount == 0 && !_infoWaiting && affordable(msgId);
+}
+
+// The answers waiting, oldest first, then CAMERA_INFORMATION once however many asked.
+void MavlinkLink::pump(bool paced) {
+  while (_answerCount > 0 && (!paced || affordable(kMsgCommandAck))) {
+    const Answer a = _answers[_answerHead];
+    _answerHead = (_answerHead + 1) % kMaxWaitingAnswers;
+    --_answerCount;
+    transmitAck(a.command, a.result, a.sysId, a.compId);
+  }
+  if (_answerCount == 0 && _infoWaiting && (!paced || affordable(kMsgCameraInformation))) {
+    _infoWaiting = false;
+    _infoSentThisPoll = true;
+    sendCameraInformation();
+  }
+}
+
+// At exit: what waits goes out at once, then the queue drains.
+bool MavlinkLink::drain(int maxMs) {
+  pump(false);
+  return _port.drain(maxMs);
 }
 
 bool MavlinkLink::transmit(uint32_t msgId, const uint8_t* payload, size_t len) {
@@ -50,35 +101,53 @@ bool MavlinkLink::transmit(uint32_t msgId, const uint8_t* payload, size_t len) {
   h.compId = _config.compId;
   h.msgId = msgId;
   uint8_t wire[kMaxFrameBytes];
+  uint64_t timestamp = 0;
+  if (_config.signing && !nextSigningTimestamp(&timestamp)) {
+    ++_port.stats().txDropped;  // past 2^48 - 1: dropped rather than wrapped
+    return false;
+  }
   const size_t n = _config.signing ? encodeSignedFrame(h, payload, len, _config.key, _config.linkId,
-                                                       nextSigningTimestamp(), wire, sizeof wire)
+                                                       timestamp, wire, sizeof wire)
                                    : encodeFrame(h, payload, len, wire, sizeof wire);
+  _budgetBytes -= static_cast<double>(n + (_port.datagrams() ? kUdpOverheadBytes : 0));
   return n > 0 && _port.send(wire, n);
 }
 
-// The wall clock's time as the link's clock moves it on, never behind what we signed or
-// saw last (the spec's rule for a system whose clock is not set).
-uint64_t MavlinkLink::nextSigningTimestamp() {
-  uint64_t t = _config.signingTimestamp + (_clock.nowUs() - _startUs) / 10;
+// Our clock in signing units: the wall clock's time at start (or the first timestamp we
+// believed, on a board whose clock is not set) moved on by the link's clock.
+uint64_t MavlinkLink::signingClock() const {
+  return _clockBase + (_clock.nowUs() - _clockBaseUs) / 10;
+}
+
+// Our clock, never behind what we signed or saw last (the spec's rule for a system whose
+// clock is not set), never past 2^48 - 1: false then, nothing is signed.
+bool MavlinkLink::nextSigningTimestamp(uint64_t* out) {
+  uint64_t t = signingClock();
   if (t <= _lastSignedTimestamp) t = _lastSignedTimestamp + 1;
   if (t <= _signatures.newest()) t = _signatures.newest() + 1;
+  if (t > kSigningMaxTimestamp) return false;
   _lastSignedTimestamp = t;
   _signatures.noteTimestamp(t);
-  return t;
+  *out = t;
+  return true;
 }
 
 void MavlinkLink::poll(LinkControl& control, const LinkStatus& status) {
   if (_port.service()) _parser.reset();
+  _infoSentThisPoll = false;
+  // The heartbeat first: a stream of answers waiting must not starve it.
+  const uint64_t now = _clock.nowUs();
+  if (_port.connected() && (!_heartbeatSent || now - _lastHeartbeatUs >= kHeartbeatPeriodUs)) {
+    if (sendHeartbeat(status)) {  // else it waits for room, tried again next poll
+      _heartbeatSent = true;
+      _lastHeartbeatUs = now;
+    }
+  }
+  pump();  // then the answers waiting from before
   if (_port.datagrams()) {
     pollDatagrams(control);
   } else {
     pollBytes(control);
-  }
-  const uint64_t now = _clock.nowUs();
-  if (_port.connected() && (!_heartbeatSent || now - _lastHeartbeatUs >= kHeartbeatPeriodUs)) {
-    sendHeartbeat(status);
-    _heartbeatSent = true;
-    _lastHeartbeatUs = now;
   }
 }
 
@@ -88,10 +157,10 @@ void MavlinkLink::pollBytes(LinkControl& control) {
     const size_t got = _port.read(_rx, sizeof _rx);
     for (size_t i = 0; i < got; ++i) {
       Message m;
-      const uint32_t badBefore = _parser.stats().badCrc + _parser.stats().badFrame;
-      if (_parser.push(_rx[i], &m)) received(m, control);
-      _port.stats().rxErrors += _parser.stats().badCrc + _parser.stats().badFrame - badBefore;
+      for (bool ready = _parser.push(_rx[i], &m); ready; ready = _parser.next(&m))
+        received(m, control);
     }
+    countParserErrors();
     if (got < sizeof _rx) break;
   }
 }
@@ -104,12 +173,22 @@ void MavlinkLink::pollDatagrams(LinkControl& control) {
     const size_t got = _port.read(_rx, sizeof _rx);
     if (got == 0) break;
     bytes += got;
-    const uint32_t badBefore = _parser.stats().badCrc + _parser.stats().badFrame;
     size_t at = 0;
     Message m;
     while (_parser.nextInDatagram(_rx, got, &at, &m)) received(m, control);
-    _port.stats().rxErrors += _parser.stats().badCrc + _parser.stats().badFrame - badBefore;
+    countParserErrors();
   }
+}
+
+// The parser's new discarded runs into the link's rx-errors, by reason.
+void MavlinkLink::countParserErrors() {
+  const ParserStats& p = _parser.stats();
+  LinkStats& s = _port.stats();
+  s.rxErrors += p.totalErrors() - _errorsCounted;
+  _errorsCounted = p.totalErrors();
+  s.rxBadCrc = p.badCrc();
+  s.rxBadLength = p.badLength();
+  s.rxBadUnknown = p.badUnknown();
 }
 
 void MavlinkLink::received(const Message& m, LinkControl& control) {
@@ -160,9 +239,16 @@ void MavlinkLink::handle(const Message& m, LinkControl& control) {
                                : addressing(ci.targetSystem, ci.targetComponent);
   if (to == Addressing::NotOurs) return;
   // With a key: unsigned, badly signed and replayed commands are not obeyed, not answered.
-  if (_config.signing && _signatures.check(m) != SignatureCheck::Good) {
-    ++_port.stats().rxRefused;
-    return;
+  if (_config.signing) {
+    const bool clockKnown = _clockBase != 0;
+    if (_signatures.check(m, clockKnown ? signingClock() : 0) != SignatureCheck::Good) {
+      ++_port.stats().rxRefused;
+      return;
+    }
+    if (!clockKnown) {  // a board whose clock is not set: the first believable time is ours
+      _clockBase = _signatures.newest();
+      _clockBaseUs = _clock.nowUs();
+    }
   }
   if (!accepted(m.header.sysId)) {  // a stranger: no answer, it learns nothing
     ++_port.stats().rxRefused;
@@ -206,8 +292,9 @@ void MavlinkLink::handleCommand(const CommandLong& c, uint8_t fromSys, uint8_t f
       break;
     case kCmdRequestMessage:
       if (c.param[0] == static_cast<float>(kMsgCameraInformation)) {
-        sendAck(c.command, kResultAccepted, fromSys, fromComp);  // the ACK comes first
-        sendCameraInformation();
+        // After the ACK; once a poll however many asked (one message serves them all).
+        if (!_infoSentThisPoll) _infoWaiting = true;
+        sendAck(c.command, kResultAccepted, fromSys, fromComp);
         return;
       }
       result = kResultDenied;  // a message we do not send on request
@@ -284,7 +371,20 @@ uint8_t MavlinkLink::setInterval(const CommandLong& c) {
   return kResultAccepted;
 }
 
+// Every answer waits its turn (the output rate); only when kMaxWaitingAnswers wait is one
+// dropped, and counted.
 void MavlinkLink::sendAck(uint16_t command, uint8_t result, uint8_t toSys, uint8_t toComp) {
+  if (_answerCount == kMaxWaitingAnswers) {
+    dropped();
+    return;
+  }
+  _answers[(_answerHead + _answerCount) % kMaxWaitingAnswers] =
+      Answer{command, result, toSys, toComp};
+  ++_answerCount;
+  pump();
+}
+
+void MavlinkLink::transmitAck(uint16_t command, uint8_t result, uint8_t toSys, uint8_t toComp) {
   CommandAck a;
   a.command = command;
   a.result = result;
@@ -296,7 +396,8 @@ void MavlinkLink::sendAck(uint16_t command, uint8_t result, uint8_t toSys, uint8
 
 // system_status: BOOT while no camera, ACTIVE while a target is tracked, else STANDBY;
 // custom_mode: cuetrack's own state (CTP_STATE_*), | 0x100 while no camera.
-void MavlinkLink::sendHeartbeat(const LinkStatus& status) {
+bool MavlinkLink::sendHeartbeat(const LinkStatus& status) {
+  if (!affordable(kMsgHeartbeat)) return false;
   Heartbeat h;
   h.type = kMavTypeCamera;
   h.autopilot = kMavAutopilotInvalid;
@@ -306,6 +407,7 @@ void MavlinkLink::sendHeartbeat(const LinkStatus& status) {
   h.customMode = status.state | (status.noCamera ? 0x100u : 0u);
   uint8_t p[16];
   transmit(kMsgHeartbeat, p, pack(h, p));
+  return true;
 }
 
 void MavlinkLink::sendCameraInformation() {
@@ -338,6 +440,10 @@ void MavlinkLink::sendFrame(const FrameReport& r) {
 // reads the box without the status steers at where the target was last seen, never at the
 // search's windows; NaN while idle or before any box.
 void MavlinkLink::sendStatus(const FrameReport& r) {
+  if (!telemetryFits(kMsgCameraTrackingImageStatus)) {  // stale by the next frame: dropped
+    dropped();
+    return;
+  }
   CameraTrackingImageStatus s;
   s.targetData = kTrackingTargetDataInStatus;
   s.pointX = s.pointY = s.radius = kNaN;
@@ -369,6 +475,10 @@ void MavlinkLink::sendStatus(const FrameReport& r) {
 }
 
 void MavlinkLink::sendLandingTarget(const FrameReport& r) {
+  if (!telemetryFits(kMsgLandingTarget)) {
+    dropped();
+    return;
+  }
   const ctp_track_t& t = r.track;
   const CameraIntrinsics& k = r.intrinsics;
   const float uPx = static_cast<float>(t.box_px[0]) + 0.5f * static_cast<float>(t.box_px[2]);

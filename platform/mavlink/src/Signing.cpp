@@ -31,7 +31,7 @@ size_t encodeSignedFrame(const Header& h, const uint8_t* payload, size_t len, co
   return n + kSignatureBytes;
 }
 
-SignatureCheck SignatureChecker::check(const Message& m) {
+SignatureCheck SignatureChecker::check(const Message& m, uint64_t clockNow) {
   if ((m.incompatFlags & kIncompatSigned) == 0) return SignatureCheck::Unsigned;
   const uint8_t header[kHeaderBytes] = {kStx,
                                         m.len,
@@ -54,6 +54,8 @@ SignatureCheck SignatureChecker::check(const Message& m) {
   if (diff != 0) return SignatureCheck::BadSignature;
   uint64_t t = 0;
   for (int i = 0; i < 6; ++i) t |= static_cast<uint64_t>(m.signature[1 + i]) << (8 * i);
+  const uint64_t latest = clockNow == 0 ? kSigningLatestBelievable : clockNow + kSigningAheadSlack;
+  if (t > latest || t > kSigningLatestBelievable) return SignatureCheck::TooNew;
   const uint8_t linkId = m.signature[0];
   Stream* s = nullptr;
   for (int i = 0; i < _count; ++i)

@@ -60,6 +60,8 @@ struct LinkStats {
   uint32_t rxFrames = 0;   // good inbound frames
   uint32_t rxErrors = 0;   // rejected inbound frames (framing, CRC, malformed commands),
                            // and datagrams the OS dropped before they were read
+  // Of rxErrors, MAVLink's discarded bytes by reason, one per run (docs/mavlink.md).
+  uint32_t rxBadCrc = 0, rxBadLength = 0, rxBadUnknown = 0;
   uint32_t rxRefused = 0;  // well-formed commands refused: not from an accepted sender
   uint32_t disconnects = 0;
   uint32_t reconnects = 0;

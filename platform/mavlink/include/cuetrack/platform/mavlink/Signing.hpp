@@ -4,7 +4,8 @@
 // SHA-256(key, the 10 header bytes, the payload, the CRC, link id, timestamp). Replays are
 // refused per stream (sender system, component and link id): each timestamp must be newer
 // than that stream's last, and a new stream's at most a minute older than the newest
-// timestamp known. No allocation, no OS.
+// timestamp known. A timestamp more than a minute ahead of our clock is refused. At most
+// kMaxStreams streams are remembered (docs/mavlink.md). No allocation, no OS.
 #pragma once
 
 #include <cstddef>
@@ -20,6 +21,15 @@ struct SigningKey {
 
 inline constexpr uint64_t kSigningEpochUnixS = 1420070400;   // 2015-01-01 00:00:00 UTC
 inline constexpr uint64_t kSigningNewStreamSlack = 6000000;  // one minute in 10 us units
+// A timestamp is 48 bits: the largest, in 2104. Ours never pass it (they would wrap to 0,
+// and every receiver would then drop our traffic as replayed).
+inline constexpr uint64_t kSigningMaxTimestamp = (uint64_t{1} << 48) - 1;
+// An incoming timestamp this far ahead of our clock is refused, not adopted: one frame from
+// the future (a peer's clock gone wrong, or a key holder's mischief) must not drag ours on.
+inline constexpr uint64_t kSigningAheadSlack = 6000000;  // one minute in 10 us units
+// While our clock is not known (a board without a real-time clock, before NTP): nothing
+// after 2100-01-01 is believed. (4102444800 - 1420070400) s in 10 us units.
+inline constexpr uint64_t kSigningLatestBelievable = 268237440000000ull;
 
 // The 6 signature bytes of a frame: header[10] (incompat flag set), payload[len], crc[2],
 // and the block's link id and timestamp (block[0..6]); written to block[7..12].
@@ -37,6 +47,7 @@ enum class SignatureCheck : uint8_t {
   BadSignature,
   Replayed,
   TooOld,
+  TooNew,  // more than kSigningAheadSlack ahead of our clock, or not believable
   TooManyStreams
 };
 
@@ -44,8 +55,10 @@ class SignatureChecker {
  public:
   static constexpr int kMaxStreams = 16;
   explicit SignatureChecker(const SigningKey& key) : _key(key) {}
-  // A parsed message: Good only when signed with our key and newer than its stream's last.
-  SignatureCheck check(const Message& m);
+  // A parsed message: Good only when signed with our key, newer than its stream's last, and
+  // at most kSigningAheadSlack ahead of clockNow (our clock in signing units; 0: not known,
+  // then at most kSigningLatestBelievable).
+  SignatureCheck check(const Message& m, uint64_t clockNow);
   // Our own clock's timestamp (what we sign with): a new stream must not be older.
   void noteTimestamp(uint64_t t) {
     if (t > _newest) _newest = t;
