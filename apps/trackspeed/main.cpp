@@ -69,10 +69,11 @@ int main(int argc, char** argv) {
   cli::Command cmd("cuetrack-trackspeed",
                    "The tracker's median update time (and its stages) on a synthetic scene.",
                    kExitCodes);
-  cmd.option("--preset", "NAME", "1.1-1.4, 2.1-2.5, dcf, best (default 2.1)", [&](const std::string& v) {
-    presetName = v;
-    return parsePreset(v.c_str(), &preset) ? "" : "unknown (1.1-1.4, 2.1-2.5, dcf, best)";
-  });
+  cmd.option(
+      "--preset", "NAME", "1.1-1.4, 2.1-2.5, dcf, best (default 2.1)", [&](const std::string& v) {
+        presetName = v;
+        return parsePreset(v.c_str(), &preset) ? "" : "unknown (1.1-1.4, 2.1-2.5, dcf, best)";
+      });
   cmd.text("--scene", "NAME", "synthetic scene (default moving; cuetrack-synth --list)", &scene);
   cmd.number("--frames", "N",
              "updates to time, 0..1999 (default 150; 0: the set-up, icount's baseline)", 0,

@@ -100,8 +100,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _filterLeads = !_is3d && _config.filterLeads2d;
   if (_filterLeads) {
     const InitError e = _lead.init(frame, target);
-    if (e == InitError::None) _state = TrackState::Tracking;
-    return e;
+    if (e != InitError::None) return e;
   }
   _numWeak = space.numWeak;
   _lost.lostAfter = space.lostAfter;
@@ -286,8 +285,11 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     e.miss = miss;
     // The filter still answers like the target on the estimate (a miss stays a miss:
     // the depth or the contrast said it is not the target).
-    const bool filterSees = filterAnswered && !miss && _peakLevel.like(_cue.peak()) &&
-                            overlap(_cue.peakBox(), e.box) >= tuning::lost::kOnEstimate;
+    // filterLeads2d: the box is the filter's; it sees the target when its peak is like
+    // the target's.
+    const bool filterSees = (filterAnswered && !miss && _peakLevel.like(_cue.peak()) &&
+                             overlap(_cue.peakBox(), e.box) >= tuning::lost::kOnEstimate) ||
+                            (_leadPeak >= 0.f && !miss && _peakLevel.like(_leadPeak));
     _state = _lost.step(_state, miss ? 0.f : e.confidence, filterSees);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
   }
@@ -303,6 +305,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     _lastEstimate = e.particle;
     _hold.learnt(frame.timeUs, e.particle, _is3d && _config.occlusionGate);
     if (_corrActive && _cue.isFilter()) _peakLevel.learnt(_cue.peak());  // on the target
+    if (_leadPeak >= 0.f) _peakLevel.learnt(_leadPeak);
     learn(clampToImage(e.box), roi);
     learned = true;
   } else if (_cue.isFilter() && !miss && !e.box.empty() && _state == TrackState::Tracking &&
@@ -412,16 +415,51 @@ void Tracker::correctDepths(float dtS) {
   }
 }
 
+TrackResult Tracker::followFilter(const Frame& frame, uint64_t t0) {
+  // filterLeads2d, tracking: the background-aware filter places the box; the classifier
+  // judges it there (lost detection, as on the particles' estimate) and learns it when
+  // the gate opens; the particles wait, gathered on it, for a search if it is lost.
+  const TrackResult lead = _lead.update(frame);
+  Estimate e;
+  e.box = clampToImage(_padding.toWindow(lead.box));
+  e.particle.p[0] = e.box.x + 0.5f * e.box.w;
+  e.particle.p[1] = e.box.y + 0.5f * e.box.h;
+  e.particle.size[0] = e.box.w;
+  e.particle.size[1] = e.box.h;
+  const PixelRect roi = clipBox(grow(e.box, NegativeSampler::kRange + 0.6f), _imageW, _imageH);
+  _channels.compute(frame, roi, false);
+  const float c = _strong.evaluate(_channels.tables(), e.box);
+  e.confidence = 0.5f * (c + 1.f);
+  e.concentration = 1.f;  // no cloud to disagree
+  e.contrast = PeakContrast::kNoRing;
+  if (_config.lostDetection) {
+    Box ring[PeakContrast::kRing];
+    float ringScores[PeakContrast::kRing];
+    const int k = PeakContrast::ring(e.box, _imageW, _imageH, ring);
+    for (int i = 0; i < k; ++i) ringScores[i] = _strong.evaluate(_channels.tables(), ring[i]);
+    e.contrast = PeakContrast::of(c, ringScores, k);
+  }
+  _corrActive = false;
+  _leadPeak = lead.confidence;  // decide(): the filter still sees the target?
+  const bool learned = decide(frame, e, false, roi);
+  _leadPeak = -1.f;
+  _lastBox = e.box;
+  _prevEstimate = e.particle;
+  _sizeFilter.reset(e.box);
+  _filter.fill(e.particle);
+  TrackResult r;
+  r.state = _state;
+  r.box = lead.box;
+  r.confidence = e.confidence;
+  r.learned = learned;
+  if (_clock != nullptr) r.timesUs.total = static_cast<uint32_t>(now() - t0);
+  return r;
+}
+
 TrackResult Tracker::update(const Frame& frame) {
   TrackResult r;
   r.state = _state;
   if (_state == TrackState::Idle) return r;
-  if (_filterLeads) {  // the filter keeps its box on a frame it cannot use
-    const uint64_t t = now();
-    r = _lead.update(frame);
-    if (_clock != nullptr) r.timesUs.total = static_cast<uint32_t>(now() - t);
-    return r;
-  }
   r.box = _padding.toTarget(_lastBox);
   if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
   const uint64_t t0 = now();
@@ -431,6 +469,7 @@ TrackResult Tracker::update(const Frame& frame) {
   const bool wasLost = _state == TrackState::Lost;
   if (wasLost) ++_lostFrames;
   _rgb = frame.rgb;
+  if (_filterLeads && !wasLost) return followFilter(frame, t0);
 
   // Predict, and tabulate the region the particles (and negatives around them) can touch.
   const PixelRect roi = predict(dtS, framesElapsed, wasLost);
@@ -462,6 +501,9 @@ TrackResult Tracker::update(const Frame& frame) {
     _lastBox = e.box;
     _prevEstimate = e.particle;
   }
+  // Found again: the filter starts anew on the target where the classifier found it.
+  if (_filterLeads && wasLost && _state == TrackState::Tracking && !e.box.empty())
+    _lead.init(frame, _padding.toTarget(clampToImage(e.box)));
 
   r.state = _state;
   r.box = _padding.toTarget(_lastBox);

@@ -142,11 +142,13 @@ TEST_CASE("every preset tracks the synthetic moving target", "[core][e2e]") {
 }
 
 TEST_CASE("best in 2D keeps a target that moves twice as far per frame", "[core][e2e][motion]") {
-  // The moving scene given every other frame, colour only (best falls back to 2D): the
-  // target moves up to ~0.3 of its side per frame. The fast-motion particles alone keep
-  // it: the control, best without them and without the correlation cue (which keeps it
-  // too), loses it in about half the runs.
+  // The moving scene given every other frame, colour only (best falls back to 2D, where
+  // the background-aware filter tracks alone): the target moves up to ~0.3 of its side
+  // per frame. The particle path (filterLeads2d off) keeps it with the fast-motion
+  // particles alone: the control, without them and without the correlation cue (which
+  // keeps it too), loses it in about half the runs.
   TrackerConfig fastOnly = presetConfig(Preset::Best);
+  fastOnly.filterLeads2d = false;
   fastOnly.correlationCue = false;
   TrackerConfig control = fastOnly;
   control.fastMotion = false;

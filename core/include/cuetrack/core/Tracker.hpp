@@ -103,6 +103,8 @@ class Tracker {
   // there that it could never confirm.
   bool scorable(const Box& b, const Particle& q, bool searching) const;
   Estimate estimate();  // weights and the estimate
+  // filterLeads2d, tracking: the filter's box, judged and learnt by the classifier.
+  TrackResult followFilter(const Frame& frame, uint64_t t0);
   // Lost detection, the update gate and learning; true when learnt.
   bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi);
 
@@ -170,6 +172,7 @@ class Tracker {
   // filterLeads2d: a 2D track is the background-aware filter's alone.
   FilterTracker _lead;
   bool _filterLeads = false;
+  float _leadPeak = -1.f;  // followFilter(): the filter's peak this frame, for decide()
 };
 // Everything together (Config.hpp's list of big buffers plus the small ones): 11,066,192 B
 // on x86-64 at 640x480 (docs/benchmarks.md), within the 16 MiB.
