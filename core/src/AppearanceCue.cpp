@@ -7,7 +7,6 @@ void AppearanceCue::start(bool enabled, bool filterWanted, bool templateScans, c
   _enabled = enabled;
   _filter = enabled && filterWanted;
   _template = enabled && (!_filter || templateScans);
-  _lastTemplate = !_filter;
   if (_filter) _dcf.reset(rgb, win);
   if (_template) _corr.reset(t, win);
 }

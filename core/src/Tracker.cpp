@@ -222,14 +222,14 @@ void Tracker::score(const PixelRect& roi, bool wasLost) {
                        _scanOrder.sort(_boxes, n, roi.y0));
 }
 
-Tracker::Estimate Tracker::estimate() {
+Tracker::Estimate Tracker::estimate(const CueAnswer& cue) {
   // Weigh: w = exp(lambda (c - c_max)).
   const int n = _filter.size();
   float cMax = -2.f;
   for (int i = 0; i < n; ++i)
     if (_scores[i] > cMax) cMax = _scores[i];
   float* w = _filter.weights();
-  if (_corrActive) {
+  if (cue.valid) {
     float rMax = -2.f;
     for (int i = 0; i < n; ++i)
       if (_corrScores[i] > rMax) rMax = _corrScores[i];
@@ -264,7 +264,8 @@ Tracker::Estimate Tracker::estimate() {
   return e;
 }
 
-bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi) {
+bool Tracker::decide(const Frame& frame, Estimate& e, const CueAnswer& cue, bool wasLost,
+                     const PixelRect& roi) {
   bool miss = false;  // whatever the confidence: not learnt, and a miss for the detector
   if (_config.lostDetection) {
     MissRule::Inputs in;
@@ -274,14 +275,14 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
     in.depthMm = e.particle.p[2];
     in.contrast = e.contrast;
     // 3D, tracked last frame (the filter searches only then): what its peak says.
-    const bool filterAnswered = _is3d && _corrActive && _cue.isFilter();
-    in.unlikeTarget = filterAnswered && _peakLevel.unlike(_cue.peak());
+    const bool filterAnswered = _is3d && cue.byFilter();
+    in.unlikeTarget = filterAnswered && _peakLevel.unlike(cue.peak);
     miss = MissRule::miss(in, _depthGuard);
     e.miss = miss;
     // The filter still answers like the target on the estimate (a miss stays a miss:
     // the depth or the contrast said it is not the target).
-    const bool filterSees = filterAnswered && !miss && _peakLevel.like(_cue.peak()) &&
-                            overlap(_cue.peakBox(), e.box) >= tuning::lost::kOnEstimate;
+    const bool filterSees = filterAnswered && !miss && _peakLevel.like(cue.peak) &&
+                            overlap(cue.box, e.box) >= tuning::lost::kOnEstimate;
     _state = _lost.step(_state, miss ? 0.f : e.confidence, filterSees);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
   }
@@ -296,7 +297,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelR
       e.box = particleBox(e.particle);
     _lastEstimate = e.particle;
     _hold.learnt(frame.timeUs, e.particle, _is3d && _config.occlusionGate);
-    if (_corrActive && _cue.isFilter()) _peakLevel.learnt(_cue.peak());  // on the target
+    if (cue.byFilter()) _peakLevel.learnt(cue.peak);  // on the target
     learn(clampToImage(e.box), roi);
     learned = true;
   } else if (_cue.isFilter() && !miss && !e.box.empty() && _state == TrackState::Tracking &&
@@ -353,22 +354,20 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
     _scores[_reseeder.index(k)] = _movedValid[k] != 0 ? _movedScores[k] : -1.f;
 }
 
-bool Tracker::searchCue(const Box& around, bool scales) {
-  return _cue.search(_rgb, _channels.tables(), around, scales);
-}
-
-void Tracker::correlate(float dtS) {
-  if (!searchCue(_lastBox, !_is3d)) return;  // in 3D the depth sets the scale
-  _corrActive = true;
+CueAnswer Tracker::correlate(float dtS) {
+  // In 3D the depth sets the scale.
+  const CueAnswer a = _cue.search(_rgb, _channels.tables(), _lastBox, !_is3d);
+  if (!a.valid) return a;
   // Some particles onto the peak, when there is one (the target may have jumped where the
   // cloud did not reach), moving on as it jumped.
-  if (_cue.peak() >= _cue.minPeak()) drawAt(_cue.peakBox(), _prevEstimate, dtS, true);
+  if (a.strong()) drawAt(a.box, _prevEstimate, dtS, true);
   const int n = _filter.size();
   for (int i = 0; i < n; ++i) {
     const Box& b = _boxes[i];
     const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
-    _corrScores[i] = b.empty() ? CorrelationCue::kNoResponse : _cue.at(u, v);
+    _corrScores[i] = b.empty() ? CorrelationCue::kNoResponse : _cue.at(a, u, v);
   }
+  return a;
 }
 
 void Tracker::scanLost(float dtS) {
@@ -381,9 +380,10 @@ void Tracker::scanLost(float dtS) {
   float best = _cue.scanMinPeak();
   Box found{};
   for (int j = 0; j < Reseeder::kTilesPerFrame && j < tiles.count(); ++j) {
-    if (_cue.scan(_rgb, _channels.tables(), _reseeder.nextTile(tiles)) && _cue.peak() >= best) {
-      best = _cue.peak();
-      found = _cue.peakBox();
+    const CueAnswer a = _cue.scan(_rgb, _channels.tables(), _reseeder.nextTile(tiles));
+    if (a.valid && a.peak >= best) {
+      best = a.peak;
+      found = a.box;
     }
   }
   if (!found.empty()) drawAt(found, _lastEstimate, dtS, false);
@@ -428,12 +428,11 @@ TrackResult Tracker::update(const Frame& frame) {
   if (_is3d && frame.hasDepth()) correctDepths(dtS);
   const uint64_t t3 = now();
   score(roi, wasLost);
-  _corrActive = false;
-  if (_cue.enabled() && !wasLost) correlate(dtS);
+  const CueAnswer cue = _cue.enabled() && !wasLost ? correlate(dtS) : CueAnswer{};
   if (_cue.enabled() && wasLost) scanLost(dtS);
-  Estimate e = estimate();
+  Estimate e = estimate(cue);
   const uint64_t t4 = now();
-  const bool learned = decide(frame, e, wasLost, roi);
+  const bool learned = decide(frame, e, cue, wasLost, roi);
   hold(frame, e);
   _fast.endFrame(learned);
   const uint64_t t5 = now();

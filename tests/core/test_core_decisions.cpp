@@ -281,27 +281,37 @@ TEST_CASE("AppearanceCue: the filter tracks, the template scans in 3D, none when
   CHECK(gCue.scanMinPeak() == tuning::dcf::kMinPeak);
   CHECK(gCue.scanStepSides() == CorrelationFilter::kPadding);
   CHECK(gCue.region(win).w == CorrelationFilter::region(win).w);
-  CHECK(gCue.search(f.rgb, gChannels.tables(), win, true));
-  CHECK(gCue.minPeak() == tuning::dcf::kMinPeak);
+  const CueAnswer a2d = gCue.search(f.rgb, gChannels.tables(), win, true);
+  CHECK(a2d.valid);
+  CHECK(a2d.byFilter());
+  CHECK(a2d.minPeak == tuning::dcf::kMinPeak);
+  CHECK(a2d.strong());  // on the window it was learnt from
+  CHECK(gCue.at(a2d, a2d.box.x + 0.5f * a2d.box.w, a2d.box.y + 0.5f * a2d.box.h) > 0.9f);
   // 3D: the filter tracks (one scale), the template scans.
   gCue.start(true, true, true, f.rgb, gChannels.tables(), win);
   CHECK(gCue.isFilter());
-  CHECK(gCue.search(f.rgb, gChannels.tables(), win, false));
-  CHECK(gCue.minPeak() == tuning::dcf::kMinPeak);
+  const CueAnswer tracked = gCue.search(f.rgb, gChannels.tables(), win, false);
+  CHECK(tracked.byFilter());
+  CHECK(tracked.minPeak == tuning::dcf::kMinPeak);
   CHECK(gCue.region(win).w == CorrelationFilter::region(win).w);
   CHECK(gCue.scanMinPeak() == tuning::correlation::kMinPeak);
   CHECK(gCue.scanStepSides() == 3.f);
-  CHECK(gCue.scan(f.rgb, gChannels.tables(), win));
-  CHECK(gCue.minPeak() == tuning::correlation::kMinPeak);
-  CHECK(gCue.peak() > 0.9f);  // the template on the window it was learnt from
+  const CueAnswer scanned = gCue.scan(f.rgb, gChannels.tables(), win);
+  CHECK(scanned.valid);
+  CHECK(scanned.byTemplate);
+  CHECK_FALSE(scanned.byFilter());  // the peak level reads the filter's answers only
+  CHECK(scanned.minPeak == tuning::correlation::kMinPeak);
+  CHECK(scanned.peak > 0.9f);  // the template on the window it was learnt from
   // The template alone (no filter wanted).
   gCue.start(true, false, false, f.rgb, gChannels.tables(), win);
   CHECK_FALSE(gCue.isFilter());
   CHECK(gCue.trackingReady());
-  CHECK(gCue.minPeak() == tuning::correlation::kMinPeak);
   CHECK(gCue.region(win).w == CorrelationCue::region(win).w);
-  CHECK(gCue.search(f.rgb, gChannels.tables(), win, false));
-  CHECK(gCue.peak() == gCue.peak());  // a number
+  const CueAnswer byTemplate = gCue.search(f.rgb, gChannels.tables(), win, false);
+  CHECK(byTemplate.valid);
+  CHECK(byTemplate.byTemplate);
+  CHECK(byTemplate.minPeak == tuning::correlation::kMinPeak);
+  CHECK(byTemplate.peak > 0.9f);
 }
 
 TEST_CASE("ConfigError: every preset is valid", "[core][config]") {

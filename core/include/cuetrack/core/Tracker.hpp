@@ -91,9 +91,9 @@ class Tracker {
   void hold(const Frame& frame, const Estimate& e);  // occlusionGate: lost behind something
   // 3D: q's box has enough valid depth (tuning::kMinDepthSupport) for its depth to be measured.
   bool depthMeasured(const Particle& q) const;
-  void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
-  void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
-  bool searchCue(const Box& around, bool scales);  // the appearance cue, on this frame
+  // correlationCue: the cue's map; some particles at its peak. Its answer (invalid when none).
+  CueAnswer correlate(float dtS);
+  void scanLost(float dtS);  // ... while lost: the template over the image, tile by tile
   // One particle in correlation::kEvery drawn at window c from `from` (Reseeder), and scored.
   void drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity);
   // Whether particle q's window b is scored (else -1). While searching (lost) it must lie
@@ -101,9 +101,10 @@ class Tracker {
   // (DepthGuard::implausibleFind): the cloud would gather on a look-alike or a texture
   // there that it could never confirm.
   bool scorable(const Box& b, const Particle& q, bool searching) const;
-  Estimate estimate();  // weights and the estimate
+  Estimate estimate(const CueAnswer& cue);  // weights (with the cue's map) and the estimate
   // Lost detection, the update gate and learning; true when learnt.
-  bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi);
+  bool decide(const Frame& frame, Estimate& e, const CueAnswer& cue, bool wasLost,
+              const PixelRect& roi);
 
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
   Box particleBox(const Particle& q) const;
@@ -141,7 +142,6 @@ class Tracker {
   AppearanceCue _cue;                // correlationCue: the filter (and template), or the template
   PeakLevel _peakLevel;              // ... the filter's peak on the target (3D: found again?)
   RgbView _rgb{};                    // update()'s colour image, for the filter
-  bool _corrActive = false;          // this frame's map was searched
   float _corrScores[kMaxParticles];  // the cue's response at each particle
   Reseeder _reseeder;                // particles at the cue's peak; the lost scan's tiles
   uint8_t _movedValid[Reseeder::kMaxMoved];  // ... whether each is scored
