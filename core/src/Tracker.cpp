@@ -25,8 +25,7 @@ ConfigError Tracker::configure(const TrackerConfig& config, uint64_t seed, const
   _config = config;
   _seed = seed;
   _clock = clock;
-  _motion3d.sizeNoise = _config.adaptCylinderSize ? tuning::cylinder::kSizeNoise : 0.f;
-  _sizeFilter.configure(tuning::size2d::kGain, tuning::size2d::kRateGain);
+  _space.configure(_config.adaptCylinderSize);
   _sizer.configure(tuning::cylinder::kSizeGain, tuning::cylinder::kCentreGain);
   _negatives.configure(NegativeSampler::paramsOf(_config));
   _fast.configure(_config.fastMotion);
@@ -46,31 +45,17 @@ void Tracker::reset() {
   _hold.stop();
 }
 
-Box Tracker::clampToImage(const Box& b) const {
-  return saneWindow(b, _imageW, _imageH);
-}
-
-Box Tracker::particleBox(const Particle& q) const {
-  return particleWindow(q, _is3d, _k);
-}
-
 void Tracker::addExample(const Box& win, bool positive) {
   const int slot = _set.add(_channels.tables(), win, positive);
   _cache.refreshExample(slot, _pool, _set);
 }
 
 void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
-  NegativeSampler::Cylinder cylinder;
-  if (_is3d) {
-    cylinder.channels = &_channels;
-    cylinder.k = _k;
-    cylinder.diameterMm = _lastEstimate.size[0];
-    cylinder.heightMm = _lastEstimate.size[1];
-    cylinder.imageW = _imageW;
-    cylinder.imageH = _imageH;
-  }
+  NegativeSampler::Cylinder store;
+  const NegativeSampler::Cylinder* cylinder =
+      _space.negativesCylinder(_channels, _lastEstimate, &store);
   for (int k = 0; k < count; ++k)
-    addExample(_negatives.next(k, around, roi, _is3d ? &cylinder : nullptr, _rng), false);
+    addExample(_negatives.next(k, around, roi, cylinder, _rng), false);
 }
 
 InitError Tracker::init(const Frame& frame, const Box& box) {
@@ -79,13 +64,12 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   if (frame.rgb.width > kMaxImageWidth || frame.rgb.height > kMaxImageHeight)
     return InitError::ImageTooLarge;
   if (box.empty()) return InitError::EmptyBox;
-  _imageW = frame.rgb.width;
-  _imageH = frame.rgb.height;
+  const int imageW = frame.rgb.width, imageH = frame.rgb.height;
   // Intersect the box with the image.
-  const float x0 = fmath::clampf(box.x, 0.f, static_cast<float>(_imageW));
-  const float y0 = fmath::clampf(box.y, 0.f, static_cast<float>(_imageH));
-  const float x1 = fmath::clampf(box.x + box.w, 0.f, static_cast<float>(_imageW));
-  const float y1 = fmath::clampf(box.y + box.h, 0.f, static_cast<float>(_imageH));
+  const float x0 = fmath::clampf(box.x, 0.f, static_cast<float>(imageW));
+  const float y0 = fmath::clampf(box.y, 0.f, static_cast<float>(imageH));
+  const float x1 = fmath::clampf(box.x + box.w, 0.f, static_cast<float>(imageW));
+  const float y1 = fmath::clampf(box.y + box.h, 0.f, static_cast<float>(imageH));
   if (!(x1 > x0) || !(y1 > y0)) return InitError::BoxOutsideImage;
   const Box target{x0, y0, x1 - x0, y1 - y0};
   if (target.w < kMinTargetPx || target.h < kMinTargetPx) return InitError::BoxTooSmall;
@@ -94,46 +78,36 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
 
   const SpaceChoice space = SpaceChoice::of(_config, frame, b, _depthMedian);
   if (space.error != InitError::None) return space.error;
-  _is3d = space.is3d;
+  _space.start(space.is3d, frame.intrinsics, imageW, imageH);
   _depthFeatures = space.depthFeatures;
+  _depthTables = space.depthFeatures || space.is3d;
   _fallbackWhy = space.why;
   _numWeak = space.numWeak;
   _lost.lostAfter = space.lostAfter;
-  _k = frame.intrinsics;
   _rng.reseed(_seed);
   _lost.reset();
   _lostFrames = 0;
   _reseeder.restartScan();
   _peakLevel.reset();
 
-  Particle q;
-  if (_is3d) {
-    q = cylinderFromBox(b, space.surfaceMm, _k);
-  } else {
-    q.p[0] = b.x + 0.5f * b.w;
-    q.p[1] = b.y + 0.5f * b.h;
-    q.size[0] = b.w;
-    q.size[1] = b.h;
-  }
+  const Particle q = _space.initial(b, space.surfaceMm);
   _lastEstimate = q;
   _hold.start(frame.timeUs, q);
   _prevEstimate = q;
   _depthGuard.reset(q.p[2]);
   _lastBox = b;
-  _sizeFilter.reset(b);
+  _space.resetSize(b);
 
-  const PixelRect roi = clipBox(grow(b, NegativeSampler::kRange + 0.6f), _imageW, _imageH);
-  _channels.compute(frame, roi, _depthFeatures || _is3d);
+  const PixelRect roi = clipBox(grow(b, NegativeSampler::kRange + 0.6f), imageW, imageH);
+  _channels.compute(frame, roi, _depthTables);
 
   if (!_pool.build(_config.useGray, _depthFeatures, _config.useColour, _config.sampling, _rng))
     return InitError::BoxTooSmall;  // cannot happen with kMaxPoolFeatures (static_assert-backed)
-  const int anchors =
-      _is3d ? tuning::training::kInitialPositives3d : tuning::training::kInitialPositives2d;
+  const int anchors = _space.initialPositives();
   _set.reset(tuning::training::kExamples, anchors);
   addExample(b, true);  // slot 0: the anchor
   for (int i = 1; i < anchors; ++i) {
-    const float jitter =
-        _is3d ? tuning::training::kInitialJitter3d : tuning::training::kInitialJitter2d;
+    const float jitter = _space.initialJitter();
     const float s = fmath::fastExp(jitter * _rng.gaussian());
     const Box j{b.x + jitter * b.w * _rng.gaussian(), b.y + jitter * b.h * _rng.gaussian(), b.w * s,
                 b.h * s};
@@ -142,12 +116,11 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   addNegatives(b, _set.numNegatives() + tuning::training::kExamples, roi);  // fill the FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
   train();
-  _cue.start(_config.correlationCue, _config.correlationFilter, _is3d, frame.rgb,
+  _cue.start(_config.correlationCue, _config.correlationFilter, _space.is3d(), frame.rgb,
              _channels.tables(), b);
 
   _sizer.clear();
-  if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
-    _sizer.calibrate(frame, _channels, b, q.size[0]);
+  if (_space.sizesCylinder() && frame.hasDepth()) _sizer.calibrate(frame, _channels, b, q.size[0]);
   _filter.setSize(_config.numParticles);
   _filter.fill(q);
   _lastTimeUs = frame.timeUs;
@@ -174,45 +147,32 @@ void Tracker::train() {
 
 PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
   const float spread = wasLost ? tuning::kLostSpread : 1.f;
-  _fast.beginFrame(_is3d, dtS);
-  const SearchView view = searchView();
+  _fast.beginFrame(_space.is3d(), dtS);
+  const SearchView view = _space.view();
   const int n = _filter.size();
   for (int i = 0; i < n; ++i) {
     Particle& q = _filter[i];
     if (wasLost && LostSearch::drawsAnew(i))
       q = LostSearch::draw(i, _lastEstimate, _lostFrames, view, _rng);
-    if (_is3d) {
-      _motion3d.predict(q, _rng, dtS, spread);
-      _fast.jump3d(i, q, _motion3d, _rng, dtS);
-      keepInView(q, _k, _imageW, _imageH);
-    } else {
-      _motion2d.predict(q, _rng, spread, framesElapsed);
-      _fast.jump2d(i, q, _motion2d, _rng);
-      // Keep windows sane and near the image.
-      const Box c = clampToImage(particleBox(q));
-      q.p[0] = c.x + 0.5f * c.w;
-      q.p[1] = c.y + 0.5f * c.h;
-      q.size[0] = c.w;
-      q.size[1] = c.h;
-    }
-    _boxes[i] = particleBox(q);
+    _space.predict(i, q, _fast, _rng, dtS, spread, framesElapsed);
+    _boxes[i] = _space.window(q);
   }
   // The cue searches around the last estimate; lost, the whole image, a few tiles a frame.
   const bool aroundLast = _cue.enabled() && !wasLost && _cue.trackingReady();
   const Box cueRegion = aroundLast ? _cue.region(_lastBox) : Box{};
   return SearchRegion::of(_boxes, n, aroundLast ? &cueRegion : nullptr, _cue.enabled() && wasLost,
-                          _imageW, _imageH);
+                          _space.imageW(), _space.imageH());
 }
 
 bool Tracker::scorable(const Box& b, const Particle& q, bool searching) const {
   if (b.empty() || b.w < 4.f || b.h < 4.f) return false;
   if (!searching)
-    return b.x + b.w > 0.f && b.y + b.h > 0.f && b.x < static_cast<float>(_imageW) &&
-           b.y < static_cast<float>(_imageH);
+    return b.x + b.w > 0.f && b.y + b.h > 0.f && b.x < static_cast<float>(_space.imageW()) &&
+           b.y < static_cast<float>(_space.imageH());
   // While lost, a window must see most of the target to re-detect it (LostSearch), and
   // in 3D stand near the depth the target was last confirmed at.
-  return LostSearch::insideEnough(b, _imageW, _imageH) &&
-         !(_is3d && _config.lostDetection && _depthGuard.implausibleFind(q.p[2]));
+  return _space.insideEnough(b) &&
+         !(_space.is3d() && _config.lostDetection && _depthGuard.implausibleFind(q.p[2]));
 }
 
 void Tracker::score(const PixelRect& roi, bool wasLost) {
@@ -243,9 +203,9 @@ Tracker::Estimate Tracker::estimate(const CueAnswer& cue) {
   // The weighted mean (the paper takes the heaviest particle: docs/experiments.md).
   Estimate e;
   e.particle = _filter.weightedMean();
-  e.box = particleBox(e.particle);
+  e.box = _space.window(e.particle);
   const float c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
-  if (!_is3d && _sizeFilter.enabled() && !e.box.empty()) e.box = _sizeFilter.filter(e.box);
+  e.box = _space.filterSize(e.box);
   float concentration = 0.f, wsum = 0.f;
   for (int i = 0; i < n; ++i) {
     concentration += w[i] * overlap(_boxes[i], e.box);
@@ -257,7 +217,7 @@ Tracker::Estimate Tracker::estimate(const CueAnswer& cue) {
   if (_config.lostDetection) {
     Box ring[PeakContrast::kRing];
     float ringScores[PeakContrast::kRing];
-    const int k = PeakContrast::ring(e.box, _imageW, _imageH, ring);
+    const int k = PeakContrast::ring(e.box, _space.imageW(), _space.imageH(), ring);
     for (int i = 0; i < k; ++i) ringScores[i] = _strong.evaluate(_channels.tables(), ring[i]);
     e.contrast = PeakContrast::of(c, ringScores, k);
   }
@@ -269,13 +229,13 @@ bool Tracker::decide(const Frame& frame, Estimate& e, const CueAnswer& cue, bool
   bool miss = false;  // whatever the confidence: not learnt, and a miss for the detector
   if (_config.lostDetection) {
     MissRule::Inputs in;
-    in.is3d = _is3d;
+    in.is3d = _space.is3d();
     in.wasLost = wasLost;
     in.onProbation = _lost.onProbation();
     in.depthMm = e.particle.p[2];
     in.contrast = e.contrast;
     // 3D, tracked last frame (the filter searches only then): what its peak says.
-    const bool filterAnswered = _is3d && cue.byFilter();
+    const bool filterAnswered = _space.is3d() && cue.byFilter();
     in.unlikeTarget = filterAnswered && _peakLevel.unlike(cue.peak);
     miss = MissRule::miss(in, _depthGuard);
     e.miss = miss;
@@ -292,13 +252,14 @@ bool Tracker::decide(const Frame& frame, Estimate& e, const CueAnswer& cue, bool
   if (!e.box.empty() && !miss && !_lost.onProbation() &&
       _gate.open(e.confidence, e.concentration, _state) && !covered(frame, e.particle)) {
     // Only on frames fit to learn: the estimate is then on the target.
-    if (_is3d && _config.adaptCylinderSize && frame.hasDepth() &&
-        _sizer.follow(frame, _channels, _k, particleBox(e.particle), e.particle, _filter))
-      e.box = particleBox(e.particle);
+    if (_space.sizesCylinder() && frame.hasDepth() &&
+        _sizer.follow(frame, _channels, _space.camera(), _space.window(e.particle), e.particle,
+                      _filter))
+      e.box = _space.window(e.particle);
     _lastEstimate = e.particle;
-    _hold.learnt(frame.timeUs, e.particle, _is3d && _config.occlusionGate);
+    _hold.learnt(frame.timeUs, e.particle, _space.is3d() && _config.occlusionGate);
     if (cue.byFilter()) _peakLevel.learnt(cue.peak);  // on the target
-    learn(clampToImage(e.box), roi);
+    learn(_space.sane(e.box), roi);
     learned = true;
   } else if (_cue.isFilter() && !miss && !e.box.empty() && _state == TrackState::Tracking &&
              !_lost.onProbation() && !covered(frame, e.particle)) {
@@ -306,7 +267,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, const CueAnswer& cue, bool
     // for the classifier: its negatives are the context itself, and a filter left behind
     // by a turning or deforming target loses it (docs/algorithm.md). Not while a nearer
     // surface covers it (3D): it would learn the occluder and follow it.
-    _cue.follow(_rgb, clampToImage(e.box));
+    _cue.follow(_rgb, _space.sane(e.box));
   }
   // The depth the target was last confirmed at: learnt, or found again (it may have
   // moved in depth while hidden).
@@ -317,7 +278,7 @@ bool Tracker::decide(const Frame& frame, Estimate& e, const CueAnswer& cue, bool
 }
 
 bool Tracker::covered(const Frame& frame, const Particle& q) const {
-  if (!_is3d || !_config.occlusionGate || !frame.hasDepth()) return false;
+  if (!_space.is3d() || !_config.occlusionGate || !frame.hasDepth()) return false;
   return OcclusionHold::covered(frame.depthMm, targetBox(q), q);  // not the padded window
 }
 
@@ -327,7 +288,8 @@ bool Tracker::depthMeasured(const Particle& q) const {
   // tables.)
   const Box b = targetBox(q);
   const Box inner{b.x + 0.25f * b.w, b.y + 0.25f * b.h, 0.5f * b.w, 0.5f * b.h};
-  return _channels.validDepthFraction(clipBox(inner, _imageW, _imageH)) >= tuning::kMinDepthSupport;
+  return _channels.validDepthFraction(clipBox(inner, _space.imageW(), _space.imageH())) >=
+         tuning::kMinDepthSupport;
 }
 
 void Tracker::hold(const Frame& frame, const Estimate& e) {
@@ -337,17 +299,17 @@ void Tracker::hold(const Frame& frame, const Estimate& e) {
 
 void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity) {
   const int moved =
-      _reseeder.place(c, from, dtS, withVelocity, searchView(), _channels, _rng, _filter);
+      _reseeder.place(c, from, dtS, withVelocity, _space.view(), _channels, _rng, _filter);
   // Mostly inside the image even while tracking, as the cue's peaks are (while searching,
   // scorable() asks that already).
   const bool searching = _state == TrackState::Lost;
   for (int k = 0; k < moved; ++k) {
     const int i = _reseeder.index(k);
     _boxes[i] = _reseeder.windows()[k];
-    _movedValid[k] = scorable(_boxes[i], _filter[i], searching) &&
-                             (searching || LostSearch::insideEnough(_boxes[i], _imageW, _imageH))
-                         ? 1
-                         : 0;
+    _movedValid[k] =
+        scorable(_boxes[i], _filter[i], searching) && (searching || _space.insideEnough(_boxes[i]))
+            ? 1
+            : 0;
   }
   _strong.evaluateMany(_channels.tables(), _reseeder.windows(), _movedValid, moved, _movedScores);
   for (int k = 0; k < moved; ++k)
@@ -356,7 +318,7 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
 
 CueAnswer Tracker::correlate(float dtS) {
   // In 3D the depth sets the scale.
-  const CueAnswer a = _cue.search(_rgb, _channels.tables(), _lastBox, !_is3d);
+  const CueAnswer a = _cue.search(_rgb, _channels.tables(), _lastBox, _space.cueSearchesScales());
   if (!a.valid) return a;
   // Some particles onto the peak, when there is one (the target may have jumped where the
   // cloud did not reach), moving on as it jumped.
@@ -374,9 +336,10 @@ void Tracker::scanLost(float dtS) {
   // While lost: the cue searched over the image, a few tiles a frame at the last learnt
   // size, the tiles' best peak (if strong enough) given particles to confirm.
   if (!_cue.scanReady()) return;
-  const Box last = particleBox(_lastEstimate);
+  const Box last = _space.window(_lastEstimate);
   if (last.empty()) return;
-  const Reseeder::Tiles tiles = Reseeder::tiles(last, _cue.scanStepSides(), _imageW, _imageH);
+  const Reseeder::Tiles tiles =
+      Reseeder::tiles(last, _cue.scanStepSides(), _space.imageW(), _space.imageH());
   float best = _cue.scanMinPeak();
   Box found{};
   for (int j = 0; j < Reseeder::kTilesPerFrame && j < tiles.count(); ++j) {
@@ -389,32 +352,17 @@ void Tracker::scanLost(float dtS) {
   if (!found.empty()) drawAt(found, _lastEstimate, dtS, false);
 }
 
-void Tracker::correctDepths(float dtS) {
-  // Pull each particle onto the measured surface (paper eq. 2).
-  const int n = _filter.size();
-  for (int i = 0; i < n; ++i) {
-    if (correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH))
-      _boxes[i] = particleBox(_filter[i]);
-  }
-  // A jump that landed on another surface (a twin further back, the background) is
-  // undone: only the sideways search is wanted, not a new depth.
-  for (int i = 1; _fast.jumping() && i < n; i += FastMotion::kEvery) {
-    if (!_fast.undoOffSurface(i, _filter[i])) continue;
-    keepInView(_filter[i], _k, _imageW, _imageH);
-    correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH);
-    _boxes[i] = particleBox(_filter[i]);
-  }
-}
-
 TrackResult Tracker::update(const Frame& frame) {
   TrackResult r;
   r.state = _state;
   if (_state == TrackState::Idle) return r;
   r.box = _padding.toTarget(_lastBox);
-  if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
+  if (frame.rgb.empty() || frame.rgb.width != _space.imageW() ||
+      frame.rgb.height != _space.imageH())
+    return r;
   const uint64_t t0 = now();
   const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
-  const int framesElapsed = _fast.framesElapsed(_is3d, _lastTimeUs, frame.timeUs);
+  const int framesElapsed = _fast.framesElapsed(_space.is3d(), _lastTimeUs, frame.timeUs);
   _lastTimeUs = frame.timeUs;
   const bool wasLost = _state == TrackState::Lost;
   if (wasLost) ++_lostFrames;
@@ -423,9 +371,9 @@ TrackResult Tracker::update(const Frame& frame) {
   // Predict, and tabulate the region the particles (and negatives around them) can touch.
   const PixelRect roi = predict(dtS, framesElapsed, wasLost);
   const uint64_t t1 = now();
-  _channels.compute(frame, roi, _depthFeatures || _is3d);
+  _channels.compute(frame, roi, _depthTables);
   const uint64_t t2 = now();
-  if (_is3d && frame.hasDepth()) correctDepths(dtS);
+  _space.correctDepths(frame.hasDepth(), dtS, _channels, _fast, _filter, _boxes);
   const uint64_t t3 = now();
   score(roi, wasLost);
   const CueAnswer cue = _cue.enabled() && !wasLost ? correlate(dtS) : CueAnswer{};
@@ -460,7 +408,7 @@ TrackResult Tracker::update(const Frame& frame) {
     r.occluded = true;
     r.box = targetBox(at);
   }
-  if (_is3d) {
+  if (_space.is3d()) {
     r.hasPosition3d = true;
     for (int a = 0; a < 3; ++a) r.positionMm[a] = at.p[a];
     r.depthPredicted = !depthMeasured(at);

@@ -31,7 +31,7 @@
 #include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
-#include "cuetrack/core/SizeFilter.hpp"
+#include "cuetrack/core/Space.hpp"
 #include "cuetrack/core/StrongClassifier.hpp"
 #include "cuetrack/core/TrackResult.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
@@ -61,7 +61,7 @@ class Tracker {
   const TrackerConfig& config() const;
 
   // Whether the running track uses the 3D state / depth features (after any fallback).
-  bool uses3d() const { return _is3d; }
+  bool uses3d() const { return _space.is3d(); }
   bool usesDepthFeatures() const { return _depthFeatures; }
   // Why a track that asked for 3D or depth runs 2D RGB (SpaceChoice); None: as asked.
   InitError fallbackReason() const { return _fallbackWhy; }
@@ -85,7 +85,6 @@ class Tracker {
   // update()'s stages, in order.
   PixelRect predict(float dtS, int framesElapsed,
                     bool wasLost);                 // motion (+ search while lost); the ROI
-  void correctDepths(float dtS);                   // 3D: every particle onto the surface
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
   bool covered(const Frame& frame, const Particle& q) const;  // occlusionGate
   void hold(const Frame& frame, const Estimate& e);  // occlusionGate: lost behind something
@@ -107,36 +106,29 @@ class Tracker {
               const PixelRect& roi);
 
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
-  Box particleBox(const Particle& q) const;
   // The target's own box of particle q: its window less any small-target padding.
-  Box targetBox(const Particle& q) const { return _padding.toTarget(particleBox(q)); }
-  Box clampToImage(const Box& b) const;
+  Box targetBox(const Particle& q) const { return _padding.toTarget(_space.window(q)); }
   void addNegatives(const Box& around, int count, const PixelRect& roi);
   void addExample(const Box& win, bool positive);
   void learn(const Box& estimate, const PixelRect& roi);
   void train();  // GentleBoost on the training set
-  SearchView searchView() const { return SearchView{_is3d, _k, _imageW, _imageH}; }
 
   TrackerConfig _config{};
   uint64_t _seed = 0;
   const Clock* _clock = nullptr;
   Rng _rng{};
-  MotionModel2d _motion2d{};
-  MotionModel3d _motion3d{};
   UpdateGate _gate{};
   LostDetector _lost{};
   TrackState _state = TrackState::Idle;
-  bool _is3d = false;
+  Space _space;  // 2D or 3D, chosen at init: windows, motion, the initial particle
   bool _depthFeatures = false;
+  bool _depthTables = false;  // the integral tables hold depth (depth features, or 3D)
   InitError _fallbackWhy = InitError::None;
   int _numWeak = 1;  // M for this track: numWeakClassifiers, or ...2d in the 2D fallback
-  int _imageW = 0, _imageH = 0;
-  CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
-  FastMotion _fast{};          // fastMotion: jumping particles, coasting over dropped frames
-  Box _lastBox{};              // the window tracked (padded for a small target)
-  WindowPadding _padding{};    // target -> window, for a target under kMinTrackedSidePx
-  SizeFilter2d _sizeFilter{};  // 2D: the estimate's size, smoothed
+  FastMotion _fast{};        // fastMotion: jumping particles, coasting over dropped frames
+  Box _lastBox{};            // the window tracked (padded for a small target)
+  WindowPadding _padding{};  // target -> window, for a target under kMinTrackedSidePx
   Particle _lastEstimate{};
   Particle _prevEstimate{};          // the last frame's estimate (correlate() moves it)
   AppearanceCue _cue;                // correlationCue: the filter (and template), or the template
