@@ -1,6 +1,5 @@
 #include "cuetrack/core/Tracker.hpp"
 
-#include "cuetrack/core/MissRule.hpp"
 #include "cuetrack/core/PeakContrast.hpp"
 #include "cuetrack/core/SearchRegion.hpp"
 #include "cuetrack/core/SpaceChoice.hpp"
@@ -28,6 +27,7 @@ ConfigError Tracker::configure(const TrackerConfig& config, uint64_t seed, const
   _space.configure(_config.adaptCylinderSize);
   _sizer.configure(tuning::cylinder::kSizeGain, tuning::cylinder::kCentreGain);
   _negatives.configure(NegativeSampler::paramsOf(_config));
+  _judge.configure(_config.lostDetection, _config.occlusionGate);
   _fast.configure(_config.fastMotion);
   reset();
   return ConfigError::None;
@@ -38,11 +38,8 @@ const TrackerConfig& Tracker::config() const {
 }
 
 void Tracker::reset() {
-  _state = TrackState::Idle;
-  _lost.reset();
+  _judge.reset();
   _lastBox = Box{};
-  _lostFrames = 0;
-  _hold.stop();
 }
 
 void Tracker::addExample(const Box& win, bool positive) {
@@ -59,7 +56,7 @@ void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
 }
 
 InitError Tracker::init(const Frame& frame, const Box& box) {
-  _state = TrackState::Idle;
+  _judge.stop();
   if (frame.rgb.empty()) return InitError::NoColour;
   if (frame.rgb.width > kMaxImageWidth || frame.rgb.height > kMaxImageHeight)
     return InitError::ImageTooLarge;
@@ -83,18 +80,12 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _depthTables = space.depthFeatures || space.is3d;
   _fallbackWhy = space.why;
   _numWeak = space.numWeak;
-  _lost.lostAfter = space.lostAfter;
   _rng.reseed(_seed);
-  _lost.reset();
-  _lostFrames = 0;
   _reseeder.restartScan();
-  _peakLevel.reset();
 
   const Particle q = _space.initial(b, space.surfaceMm);
   _lastEstimate = q;
-  _hold.start(frame.timeUs, q);
   _prevEstimate = q;
-  _depthGuard.reset(q.p[2]);
   _lastBox = b;
   _space.resetSize(b);
 
@@ -125,7 +116,7 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   _filter.fill(q);
   _lastTimeUs = frame.timeUs;
   _fast.start();
-  _state = TrackState::Tracking;
+  _judge.start(space.is3d, space.lostAfter, frame.timeUs, q);
   return InitError::None;
 }
 
@@ -153,7 +144,7 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
   for (int i = 0; i < n; ++i) {
     Particle& q = _filter[i];
     if (wasLost && LostSearch::drawsAnew(i))
-      q = LostSearch::draw(i, _lastEstimate, _lostFrames, view, _rng);
+      q = LostSearch::draw(i, _lastEstimate, _judge.lostFrames(), view, _rng);
     _space.predict(i, q, _fast, _rng, dtS, spread, framesElapsed);
     _boxes[i] = _space.window(q);
   }
@@ -171,8 +162,7 @@ bool Tracker::scorable(const Box& b, const Particle& q, bool searching) const {
            b.y < static_cast<float>(_space.imageH());
   // While lost, a window must see most of the target to re-detect it (LostSearch), and
   // in 3D stand near the depth the target was last confirmed at.
-  return _space.insideEnough(b) &&
-         !(_space.is3d() && _config.lostDetection && _depthGuard.implausibleFind(q.p[2]));
+  return _space.insideEnough(b) && !_judge.implausibleFind(q.p[2]);
 }
 
 void Tracker::score(const PixelRect& roi, bool wasLost) {
@@ -182,7 +172,7 @@ void Tracker::score(const PixelRect& roi, bool wasLost) {
                        _scanOrder.sort(_boxes, n, roi.y0));
 }
 
-Tracker::Estimate Tracker::estimate(const CueAnswer& cue) {
+TrackEstimate Tracker::estimate(const CueAnswer& cue) {
   // Weigh: w = exp(lambda (c - c_max)).
   const int n = _filter.size();
   float cMax = -2.f;
@@ -201,7 +191,7 @@ Tracker::Estimate Tracker::estimate(const CueAnswer& cue) {
   }
 
   // The weighted mean (the paper takes the heaviest particle: docs/experiments.md).
-  Estimate e;
+  TrackEstimate e;
   e.particle = _filter.weightedMean();
   e.box = _space.window(e.particle);
   const float c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
@@ -224,62 +214,23 @@ Tracker::Estimate Tracker::estimate(const CueAnswer& cue) {
   return e;
 }
 
-bool Tracker::decide(const Frame& frame, Estimate& e, const CueAnswer& cue, bool wasLost,
-                     const PixelRect& roi) {
-  bool miss = false;  // whatever the confidence: not learnt, and a miss for the detector
-  if (_config.lostDetection) {
-    MissRule::Inputs in;
-    in.is3d = _space.is3d();
-    in.wasLost = wasLost;
-    in.onProbation = _lost.onProbation();
-    in.depthMm = e.particle.p[2];
-    in.contrast = e.contrast;
-    // 3D, tracked last frame (the filter searches only then): what its peak says.
-    const bool filterAnswered = _space.is3d() && cue.byFilter();
-    in.unlikeTarget = filterAnswered && _peakLevel.unlike(cue.peak);
-    miss = MissRule::miss(in, _depthGuard);
-    e.miss = miss;
-    // The filter still answers like the target on the estimate (a miss stays a miss:
-    // the depth or the contrast said it is not the target).
-    const bool filterSees = filterAnswered && !miss && _peakLevel.like(cue.peak) &&
-                            overlap(cue.box, e.box) >= tuning::lost::kOnEstimate;
-    _state = _lost.step(_state, miss ? 0.f : e.confidence, filterSees);
-    if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
-  }
-  // Just found again (on probation): the estimate may be off the target's centre, or
-  // on a look-alike; learn only once the detector has confirmed it.
-  bool learned = false;
-  if (!e.box.empty() && !miss && !_lost.onProbation() &&
-      _gate.open(e.confidence, e.concentration, _state) && !covered(frame, e.particle)) {
-    // Only on frames fit to learn: the estimate is then on the target.
+bool Tracker::decide(const Frame& frame, TrackEstimate& e, const CueAnswer& cue, bool wasLost,
+                     const PixelRect& roi, bool* miss) {
+  const TrackJudge::Verdict v = _judge.decide(
+      e, cue, _cue.isFilter(), wasLost, TrackJudge::Sight{frame.depthMm, targetBox(e.particle)});
+  *miss = v.miss;
+  if (v.action == TrackJudge::Action::Learn) {
     if (_space.sizesCylinder() && frame.hasDepth() &&
         _sizer.follow(frame, _channels, _space.camera(), _space.window(e.particle), e.particle,
                       _filter))
       e.box = _space.window(e.particle);
     _lastEstimate = e.particle;
-    _hold.learnt(frame.timeUs, e.particle, _space.is3d() && _config.occlusionGate);
-    if (cue.byFilter()) _peakLevel.learnt(cue.peak);  // on the target
     learn(_space.sane(e.box), roi);
-    learned = true;
-  } else if (_cue.isFilter() && !miss && !e.box.empty() && _state == TrackState::Tracking &&
-             !_lost.onProbation() && !covered(frame, e.particle)) {
-    // The filter follows the target on every frame it is tracked, not only on those fit
-    // for the classifier: its negatives are the context itself, and a filter left behind
-    // by a turning or deforming target loses it (docs/algorithm.md). Not while a nearer
-    // surface covers it (3D): it would learn the occluder and follow it.
+  } else if (v.action == TrackJudge::Action::FollowFilter) {
     _cue.follow(_rgb, _space.sane(e.box));
   }
-  // The depth the target was last confirmed at: learnt, or found again (it may have
-  // moved in depth while hidden).
-  const bool confirmed =
-      learned || (_state == TrackState::Tracking && (wasLost || _lost.onProbation()));
-  if (confirmed) _depthGuard.confirm(e.particle.p[2]);
-  return learned;
-}
-
-bool Tracker::covered(const Frame& frame, const Particle& q) const {
-  if (!_space.is3d() || !_config.occlusionGate || !frame.hasDepth()) return false;
-  return OcclusionHold::covered(frame.depthMm, targetBox(q), q);  // not the padded window
+  _judge.settle(v, frame.timeUs, e.particle, cue);
+  return v.action == TrackJudge::Action::Learn;
 }
 
 bool Tracker::depthMeasured(const Particle& q) const {
@@ -292,17 +243,12 @@ bool Tracker::depthMeasured(const Particle& q) const {
          tuning::kMinDepthSupport;
 }
 
-void Tracker::hold(const Frame& frame, const Estimate& e) {
-  const bool behind = (_state == TrackState::Lost || e.miss) && covered(frame, _lastEstimate);
-  _hold.step(frame.timeUs, behind, &_lastEstimate);  // the search follows the held estimate
-}
-
 void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity) {
   const int moved =
       _reseeder.place(c, from, dtS, withVelocity, _space.view(), _channels, _rng, _filter);
   // Mostly inside the image even while tracking, as the cue's peaks are (while searching,
   // scorable() asks that already).
-  const bool searching = _state == TrackState::Lost;
+  const bool searching = _judge.state() == TrackState::Lost;
   for (int k = 0; k < moved; ++k) {
     const int i = _reseeder.index(k);
     _boxes[i] = _reseeder.windows()[k];
@@ -354,8 +300,8 @@ void Tracker::scanLost(float dtS) {
 
 TrackResult Tracker::update(const Frame& frame) {
   TrackResult r;
-  r.state = _state;
-  if (_state == TrackState::Idle) return r;
+  r.state = _judge.state();
+  if (r.state == TrackState::Idle) return r;
   r.box = _padding.toTarget(_lastBox);
   if (frame.rgb.empty() || frame.rgb.width != _space.imageW() ||
       frame.rgb.height != _space.imageH())
@@ -364,8 +310,7 @@ TrackResult Tracker::update(const Frame& frame) {
   const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
   const int framesElapsed = _fast.framesElapsed(_space.is3d(), _lastTimeUs, frame.timeUs);
   _lastTimeUs = frame.timeUs;
-  const bool wasLost = _state == TrackState::Lost;
-  if (wasLost) ++_lostFrames;
+  const bool wasLost = _judge.beginFrame();
   _rgb = frame.rgb;
 
   // Predict, and tabulate the region the particles (and negatives around them) can touch.
@@ -378,17 +323,19 @@ TrackResult Tracker::update(const Frame& frame) {
   score(roi, wasLost);
   const CueAnswer cue = _cue.enabled() && !wasLost ? correlate(dtS) : CueAnswer{};
   if (_cue.enabled() && wasLost) scanLost(dtS);
-  Estimate e = estimate(cue);
+  TrackEstimate e = estimate(cue);
   const uint64_t t4 = now();
-  const bool learned = decide(frame, e, cue, wasLost, roi);
-  hold(frame, e);
+  bool miss = false;
+  const bool learned = decide(frame, e, cue, wasLost, roi, &miss);
+  _judge.hold(frame.timeUs, miss, TrackJudge::Sight{frame.depthMm, targetBox(_lastEstimate)},
+              &_lastEstimate);
   _fast.endFrame(learned);
   const uint64_t t5 = now();
 
   const int n = _filter.size();
 
   _filter.resample(_rng);
-  if (_state == TrackState::Lost || wasLost) {
+  if (_judge.state() == TrackState::Lost || wasLost) {
     // Searching (or just found): forget velocities, including the jumps the depth
     // correction gave search particles, so the cloud spreads around where it is.
     for (int i = 0; i < n; ++i) _filter[i].v.setZero();
@@ -398,16 +345,12 @@ TrackResult Tracker::update(const Frame& frame) {
     _prevEstimate = e.particle;
   }
 
-  r.state = _state;
   r.box = _padding.toTarget(_lastBox);
   r.confidence = e.confidence;
   r.learned = learned;
-  const Particle& at = _hold.holding() ? _lastEstimate : e.particle;
-  if (_hold.holding()) {
-    r.state = TrackState::Tracking;
-    r.occluded = true;
-    r.box = targetBox(at);
-  }
+  const bool held = _judge.report(&r);
+  const Particle& at = held ? _lastEstimate : e.particle;
+  if (held) r.box = targetBox(at);
   if (_space.is3d()) {
     r.hasPosition3d = true;
     for (int a = 0; a < 3; ++a) r.positionMm[a] = at.p[a];

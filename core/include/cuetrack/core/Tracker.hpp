@@ -15,24 +15,21 @@
 #include "cuetrack/core/Clock.hpp"
 #include "cuetrack/core/ConfigError.hpp"
 #include "cuetrack/core/CylinderSizer.hpp"
-#include "cuetrack/core/DepthGuard.hpp"
 #include "cuetrack/core/DepthMedian.hpp"
 #include "cuetrack/core/FastMotion.hpp"
 #include "cuetrack/core/FeaturePool.hpp"
 #include "cuetrack/core/Frame.hpp"
-#include "cuetrack/core/Gate.hpp"
 #include "cuetrack/core/InitError.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/LostSearch.hpp"
 #include "cuetrack/core/NegativeSampler.hpp"
-#include "cuetrack/core/OcclusionHold.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
-#include "cuetrack/core/PeakLevel.hpp"
 #include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
 #include "cuetrack/core/Space.hpp"
 #include "cuetrack/core/StrongClassifier.hpp"
+#include "cuetrack/core/TrackJudge.hpp"
 #include "cuetrack/core/TrackResult.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
 #include "cuetrack/core/TrainingSet.hpp"
@@ -72,22 +69,10 @@ class Tracker {
   const ParticleFilter& particles() const { return _filter; }
 
  private:
-  // One update's estimate: the particle (3D: the cylinder), its window, and what the
-  // update gate and lost detection judge it by.
-  struct Estimate {
-    Particle particle{};
-    Box box{};
-    float confidence = 0.f;     // (c + 1) / 2 at the estimate
-    float concentration = 0.f;  // weighted mean overlap of the particles with it
-    float contrast = 0.f;       // PeakContrast: the score above the windows around it
-    bool miss = false;          // decide(): not the target, whatever the confidence
-  };
   // update()'s stages, in order.
   PixelRect predict(float dtS, int framesElapsed,
                     bool wasLost);                 // motion (+ search while lost); the ROI
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
-  bool covered(const Frame& frame, const Particle& q) const;  // occlusionGate
-  void hold(const Frame& frame, const Estimate& e);  // occlusionGate: lost behind something
   // 3D: q's box has enough valid depth (tuning::kMinDepthSupport) for its depth to be measured.
   bool depthMeasured(const Particle& q) const;
   // correlationCue: the cue's map; some particles at its peak. Its answer (invalid when none).
@@ -100,10 +85,10 @@ class Tracker {
   // (DepthGuard::implausibleFind): the cloud would gather on a look-alike or a texture
   // there that it could never confirm.
   bool scorable(const Box& b, const Particle& q, bool searching) const;
-  Estimate estimate(const CueAnswer& cue);  // weights (with the cue's map) and the estimate
-  // Lost detection, the update gate and learning; true when learnt.
-  bool decide(const Frame& frame, Estimate& e, const CueAnswer& cue, bool wasLost,
-              const PixelRect& roi);
+  TrackEstimate estimate(const CueAnswer& cue);  // weights (with the cue's map) and the estimate
+  // The verdict (TrackJudge) and its action; true when learnt, *miss: the frame missed.
+  bool decide(const Frame& frame, TrackEstimate& e, const CueAnswer& cue, bool wasLost,
+              const PixelRect& roi, bool* miss);
 
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
   // The target's own box of particle q: its window less any small-target padding.
@@ -117,10 +102,8 @@ class Tracker {
   uint64_t _seed = 0;
   const Clock* _clock = nullptr;
   Rng _rng{};
-  UpdateGate _gate{};
-  LostDetector _lost{};
-  TrackState _state = TrackState::Idle;
-  Space _space;  // 2D or 3D, chosen at init: windows, motion, the initial particle
+  TrackJudge _judge;  // the state, the miss, what to learn, the hold
+  Space _space;       // 2D or 3D, chosen at init: windows, motion, the initial particle
   bool _depthFeatures = false;
   bool _depthTables = false;  // the integral tables hold depth (depth features, or 3D)
   InitError _fallbackWhy = InitError::None;
@@ -132,17 +115,11 @@ class Tracker {
   Particle _lastEstimate{};
   Particle _prevEstimate{};          // the last frame's estimate (correlate() moves it)
   AppearanceCue _cue;                // correlationCue: the filter (and template), or the template
-  PeakLevel _peakLevel;              // ... the filter's peak on the target (3D: found again?)
   RgbView _rgb{};                    // update()'s colour image, for the filter
   float _corrScores[kMaxParticles];  // the cue's response at each particle
   Reseeder _reseeder;                // particles at the cue's peak; the lost scan's tiles
   uint8_t _movedValid[Reseeder::kMaxMoved];  // ... whether each is scored
   float _movedScores[Reseeder::kMaxMoved];
-  // occlusionGate: lost while covered by a nearer surface, the target is reported where
-  // it is held; _lastEstimate follows, and the search with it.
-  OcclusionHold _hold;
-  int _lostFrames = 0;     // lost detection (beyond the paper): frames since declared lost
-  DepthGuard _depthGuard;  // ... 3D: the estimate's depth against the confirmed one
 
   IntegralChannels _channels;
   FeaturePool _pool;
