@@ -94,6 +94,28 @@ const NegativeSampler::Cylinder* Space::negativesCylinder(const IntegralChannels
   return out;
 }
 
+bool Space::scorable(const Box& b, bool searching) const {
+  if (b.empty() || b.w < 4.f || b.h < 4.f) return false;
+  if (!searching)
+    return b.x + b.w > 0.f && b.y + b.h > 0.f && b.x < static_cast<float>(_w) &&
+           b.y < static_cast<float>(_h);
+  return insideEnough(b);
+}
+
+void Space::report(TrackResult* r, const Particle& at, const Box& targetBox,
+                   const IntegralChannels& channels) const {
+  if (!_is3d) return;
+  r->hasPosition3d = true;
+  for (int a = 0; a < 3; ++a) r->positionMm[a] = at.p[a];
+  // The inner half of the target's own box: a cylinder's or a turned box's silhouette
+  // leaves background at the corners of its box. (A frame without depth has none in the
+  // tables.)
+  const Box& b = targetBox;
+  const Box inner{b.x + 0.25f * b.w, b.y + 0.25f * b.h, 0.5f * b.w, 0.5f * b.h};
+  r->depthPredicted =
+      !(channels.validDepthFraction(clipBox(inner, _w, _h)) >= tuning::kMinDepthSupport);
+}
+
 Box Space::filterSize(const Box& b) {
   if (_is3d || !_sizeFilter.enabled() || b.empty()) return b;
   return _sizeFilter.filter(b);

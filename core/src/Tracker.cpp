@@ -1,5 +1,6 @@
 #include "cuetrack/core/Tracker.hpp"
 
+#include "cuetrack/core/InitTarget.hpp"
 #include "cuetrack/core/PeakContrast.hpp"
 #include "cuetrack/core/SearchRegion.hpp"
 #include "cuetrack/core/SpaceChoice.hpp"
@@ -57,19 +58,9 @@ void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
 
 InitError Tracker::init(const Frame& frame, const Box& box) {
   _judge.stop();
-  if (frame.rgb.empty()) return InitError::NoColour;
-  if (frame.rgb.width > kMaxImageWidth || frame.rgb.height > kMaxImageHeight)
-    return InitError::ImageTooLarge;
-  if (box.empty()) return InitError::EmptyBox;
+  Box target;
+  if (const InitError e = initTarget(frame.rgb, box, &target); e != InitError::None) return e;
   const int imageW = frame.rgb.width, imageH = frame.rgb.height;
-  // Intersect the box with the image.
-  const float x0 = fmath::clampf(box.x, 0.f, static_cast<float>(imageW));
-  const float y0 = fmath::clampf(box.y, 0.f, static_cast<float>(imageH));
-  const float x1 = fmath::clampf(box.x + box.w, 0.f, static_cast<float>(imageW));
-  const float y1 = fmath::clampf(box.y + box.h, 0.f, static_cast<float>(imageH));
-  if (!(x1 > x0) || !(y1 > y0)) return InitError::BoxOutsideImage;
-  const Box target{x0, y0, x1 - x0, y1 - y0};
-  if (target.w < kMinTargetPx || target.h < kMinTargetPx) return InitError::BoxTooSmall;
   _padding = WindowPadding::forTarget(target);
   const Box b = _padding.toWindow(target);  // the window tracked
 
@@ -156,13 +147,9 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
 }
 
 bool Tracker::scorable(const Box& b, const Particle& q, bool searching) const {
-  if (b.empty() || b.w < 4.f || b.h < 4.f) return false;
-  if (!searching)
-    return b.x + b.w > 0.f && b.y + b.h > 0.f && b.x < static_cast<float>(_space.imageW()) &&
-           b.y < static_cast<float>(_space.imageH());
-  // While lost, a window must see most of the target to re-detect it (LostSearch), and
-  // in 3D stand near the depth the target was last confirmed at.
-  return _space.insideEnough(b) && !_judge.implausibleFind(q.p[2]);
+  // While lost, in 3D, a window must also stand near the depth the target was last
+  // confirmed at.
+  return _space.scorable(b, searching) && !(searching && _judge.implausibleFind(q.p[2]));
 }
 
 void Tracker::score(const PixelRect& roi, bool wasLost) {
@@ -173,44 +160,20 @@ void Tracker::score(const PixelRect& roi, bool wasLost) {
 }
 
 TrackEstimate Tracker::estimate(const CueAnswer& cue) {
-  // Weigh: w = exp(lambda (c - c_max)).
-  const int n = _filter.size();
-  float cMax = -2.f;
-  for (int i = 0; i < n; ++i)
-    if (_scores[i] > cMax) cMax = _scores[i];
-  float* w = _filter.weights();
-  if (cue.valid) {
-    float rMax = -2.f;
-    for (int i = 0; i < n; ++i)
-      if (_corrScores[i] > rMax) rMax = _corrScores[i];
-    for (int i = 0; i < n; ++i)
-      w[i] = fmath::fastExp(tuning::kWeightGain * (_scores[i] - cMax) +
-                            tuning::correlation::kResponseGain * (_corrScores[i] - rMax));
-  } else {
-    for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(tuning::kWeightGain * (_scores[i] - cMax));
-  }
-
+  _filter.weigh(_scores, cue.valid ? _corrScores : nullptr);
   // The weighted mean (the paper takes the heaviest particle: docs/experiments.md).
   TrackEstimate e;
   e.particle = _filter.weightedMean();
   e.box = _space.window(e.particle);
   const float c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
   e.box = _space.filterSize(e.box);
-  float concentration = 0.f, wsum = 0.f;
-  for (int i = 0; i < n; ++i) {
-    concentration += w[i] * overlap(_boxes[i], e.box);
-    wsum += w[i];
-  }
-  e.concentration = wsum > 0.f ? concentration / wsum : 0.f;
+  e.concentration = _filter.concentration(_boxes, e.box);
   e.confidence = 0.5f * (c + 1.f);
   e.contrast = PeakContrast::kNoRing;
-  if (_config.lostDetection) {
-    Box ring[PeakContrast::kRing];
-    float ringScores[PeakContrast::kRing];
-    const int k = PeakContrast::ring(e.box, _space.imageW(), _space.imageH(), ring);
-    for (int i = 0; i < k; ++i) ringScores[i] = _strong.evaluate(_channels.tables(), ring[i]);
-    e.contrast = PeakContrast::of(c, ringScores, k);
-  }
+  if (_config.lostDetection)
+    e.contrast = PeakContrast::around(
+        e.box, _space.imageW(), _space.imageH(), c,
+        [this](const Box& b) { return _strong.evaluate(_channels.tables(), b); });
   return e;
 }
 
@@ -231,16 +194,6 @@ bool Tracker::decide(const Frame& frame, TrackEstimate& e, const CueAnswer& cue,
   }
   _judge.settle(v, frame.timeUs, e.particle, cue);
   return v.action == TrackJudge::Action::Learn;
-}
-
-bool Tracker::depthMeasured(const Particle& q) const {
-  // The inner half of the target's own box: a cylinder's or a turned box's silhouette
-  // leaves background at the corners of its box. (A frame without depth has none in the
-  // tables.)
-  const Box b = targetBox(q);
-  const Box inner{b.x + 0.25f * b.w, b.y + 0.25f * b.h, 0.5f * b.w, 0.5f * b.h};
-  return _channels.validDepthFraction(clipBox(inner, _space.imageW(), _space.imageH())) >=
-         tuning::kMinDepthSupport;
 }
 
 void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity) {
@@ -269,12 +222,7 @@ CueAnswer Tracker::correlate(float dtS) {
   // Some particles onto the peak, when there is one (the target may have jumped where the
   // cloud did not reach), moving on as it jumped.
   if (a.strong()) drawAt(a.box, _prevEstimate, dtS, true);
-  const int n = _filter.size();
-  for (int i = 0; i < n; ++i) {
-    const Box& b = _boxes[i];
-    const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
-    _corrScores[i] = b.empty() ? CorrelationCue::kNoResponse : _cue.at(a, u, v);
-  }
+  _cue.atWindows(a, _boxes, _filter.size(), _corrScores);
   return a;
 }
 
@@ -286,15 +234,7 @@ void Tracker::scanLost(float dtS) {
   if (last.empty()) return;
   const Reseeder::Tiles tiles =
       Reseeder::tiles(last, _cue.scanStepSides(), _space.imageW(), _space.imageH());
-  float best = _cue.scanMinPeak();
-  Box found{};
-  for (int j = 0; j < Reseeder::kTilesPerFrame && j < tiles.count(); ++j) {
-    const CueAnswer a = _cue.scan(_rgb, _channels.tables(), _reseeder.nextTile(tiles));
-    if (a.valid && a.peak >= best) {
-      best = a.peak;
-      found = a.box;
-    }
-  }
+  const Box found = _cue.scanTiles(_rgb, _channels.tables(), tiles, _reseeder);
   if (!found.empty()) drawAt(found, _lastEstimate, dtS, false);
 }
 
@@ -332,14 +272,8 @@ TrackResult Tracker::update(const Frame& frame) {
   _fast.endFrame(learned);
   const uint64_t t5 = now();
 
-  const int n = _filter.size();
-
   _filter.resample(_rng);
-  if (_judge.state() == TrackState::Lost || wasLost) {
-    // Searching (or just found): forget velocities, including the jumps the depth
-    // correction gave search particles, so the cloud spreads around where it is.
-    for (int i = 0; i < n; ++i) _filter[i].v.setZero();
-  }
+  if (_judge.searching(wasLost)) _filter.forgetVelocities();
   if (!e.box.empty()) {
     _lastBox = e.box;
     _prevEstimate = e.particle;
@@ -351,11 +285,7 @@ TrackResult Tracker::update(const Frame& frame) {
   const bool held = _judge.report(&r);
   const Particle& at = held ? _lastEstimate : e.particle;
   if (held) r.box = targetBox(at);
-  if (_space.is3d()) {
-    r.hasPosition3d = true;
-    for (int a = 0; a < 3; ++a) r.positionMm[a] = at.p[a];
-    r.depthPredicted = !depthMeasured(at);
-  }
+  _space.report(&r, at, targetBox(at), _channels);
   if (_clock != nullptr) {
     r.timesUs.predict = static_cast<uint32_t>((t1 - t0) + (t3 - t2));
     r.timesUs.features = static_cast<uint32_t>(t2 - t1);

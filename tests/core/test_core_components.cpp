@@ -298,6 +298,20 @@ TEST_CASE("WindowPadding: a small target's window is padded about its centre, an
   CHECK(back.h == Approx(8.f));
 }
 
+TEST_CASE("PeakContrast::around scores the ring and takes the mean off the estimate's score",
+          "[core][peakcontrast]") {
+  int calls = 0;
+  const float c = PeakContrast::around(Box{100, 100, 40, 20}, 640, 480, 0.8f, [&](const Box& b) {
+    ++calls;
+    return b.x < 100.f ? 0.4f : 0.f;  // the window on the left scores 0.4
+  });
+  CHECK(calls == 4);
+  CHECK(c == Approx(0.8f - 0.1f));
+  // A window as large as the image has no ring: taken to stand out.
+  CHECK(PeakContrast::around(Box{0, 0, 640, 480}, 640, 480, 0.f, [](const Box&) { return 1.f; }) ==
+        PeakContrast::kNoRing);
+}
+
 TEST_CASE("PeakContrast: the ring is the four windows one side away inside the image",
           "[core][components]") {
   Box ring[PeakContrast::kRing];

@@ -10,6 +10,7 @@
 #include "cuetrack/core/AppearanceCue.hpp"
 #include "cuetrack/core/ConfigError.hpp"
 #include "cuetrack/core/Gate.hpp"
+#include "cuetrack/core/InitTarget.hpp"
 #include "cuetrack/core/MissRule.hpp"
 #include "cuetrack/core/OcclusionHold.hpp"
 #include "cuetrack/core/PeakLevel.hpp"
@@ -312,6 +313,19 @@ TEST_CASE("AppearanceCue: the filter tracks, the template scans in 3D, none when
   CHECK(byTemplate.byTemplate);
   CHECK(byTemplate.minPeak == tuning::correlation::kMinPeak);
   CHECK(byTemplate.peak > 0.9f);
+}
+
+TEST_CASE("initTarget: the start box within the image, or why none", "[core][init]") {
+  const Frame f = scene(0);
+  Box t;
+  CHECK(initTarget(f.rgb, Box{-10.f, 100.f, 30.f, 40.f}, &t) == InitError::None);
+  CHECK(t.x == 0.f);
+  CHECK(t.w == 20.f);
+  CHECK(t.h == 20.f);  // cut at the bottom edge (H = 120)
+  CHECK(initTarget(RgbView{}, Box{0.f, 0.f, 10.f, 10.f}, &t) == InitError::NoColour);
+  CHECK(initTarget(f.rgb, Box{}, &t) == InitError::EmptyBox);
+  CHECK(initTarget(f.rgb, Box{W + 5.f, 0.f, 10.f, 10.f}, &t) == InitError::BoxOutsideImage);
+  CHECK(initTarget(f.rgb, Box{W - 2.f, 0.f, 10.f, 10.f}, &t) == InitError::BoxTooSmall);
 }
 
 TEST_CASE("ConfigError: every preset is valid", "[core][config]") {

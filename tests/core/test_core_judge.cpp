@@ -108,7 +108,7 @@ TEST_CASE("TrackJudge: covered by a nearer surface, nothing is learnt and the ta
   TrackJudge j = started(true, true, true);
   CueAnswer none;
   CHECK_FALSE(j.covered(sight(0), at3d(1500.f)));  // no depth: never covered
-  const TrackJudge::Sight near = sight(500);  // a surface a metre in front of the target
+  const TrackJudge::Sight near = sight(500);       // a surface a metre in front of the target
   CHECK(j.covered(near, at3d(1500.f)));
   TrackJudge::Verdict v = j.decide(estimate(1500.f, 0.9f), none, true, j.beginFrame(), near);
   CHECK(v.action == TrackJudge::Action::None);

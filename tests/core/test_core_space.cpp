@@ -101,3 +101,25 @@ TEST_CASE("Space: the motion step moves a particle and keeps it sane", "[core][s
   CHECK(p1.p[0] != q.p[0]);   // the noise moved it
   CHECK(p1.p[0] == p2.p[0]);  // the same draws, the same step
 }
+
+TEST_CASE("Space: which windows are scored, and the 3D position reported", "[core][space]") {
+  Space s;
+  s.configure(false);
+  s.start(false, kK, W, H);
+  const Box halfOut{-15.f, 10.f, 30.f, 30.f};
+  CHECK(s.scorable(halfOut, false));       // tracking: touching the image is enough
+  CHECK_FALSE(s.scorable(halfOut, true));  // searching: mostly inside it
+  CHECK_FALSE(s.scorable(Box{10.f, 10.f, 3.f, 30.f}, false));  // under 4 px a side
+  CHECK_FALSE(s.scorable(Box{W + 1.f, 10.f, 30.f, 30.f}, false));
+  TrackResult r;
+  const Particle q = s.initial(Box{60.f, 40.f, 26.f, 26.f}, 0.f);
+  s.report(&r, q, s.window(q), gChannels);
+  CHECK_FALSE(r.hasPosition3d);  // 2D: no position
+  s.start(true, kK, W, H);
+  const Particle c = s.initial(Box{60.f, 40.f, 26.f, 26.f}, 1500.f);
+  // gChannels has tabulated nothing: no valid depth anywhere.
+  s.report(&r, c, s.window(c), gChannels);
+  CHECK(r.hasPosition3d);
+  CHECK(r.positionMm[2] == c.p[2]);
+  CHECK(r.depthPredicted);  // no valid depth in its box
+}

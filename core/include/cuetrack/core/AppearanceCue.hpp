@@ -11,6 +11,7 @@
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/core/Image.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
+#include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
@@ -58,11 +59,17 @@ class AppearanceCue {
     return _template ? answer(true, _corr.search(t, around))
                      : answer(false, _dcf.search(rgb, around, false));
   }
+  // Lost: the scan's next tiles (Reseeder::kTilesPerFrame of `tiles`, in `order`'s
+  // round); the box of their best peak at least scanMinPeak(), else an empty box.
+  Box scanTiles(const RgbView& rgb, const FrameTables& t, const Reseeder::Tiles& tiles,
+                Reseeder& order);
   // The response at image point (u, v) of the map that gave answer `a` (valid, and the
   // last search or scan).
   float at(const CueAnswer& a, float u, float v) const {
     return a.byTemplate ? _corr.at(u, v) : _dcf.at(u, v);
   }
+  // at() at the centre of each of windows[n] into out[n] (an empty window: kNoResponse).
+  void atWindows(const CueAnswer& a, const Box* windows, int n, float* out) const;
   // Whether the tracking cue, the scanning one, has a model.
   bool trackingReady() const { return _filter ? _dcf.ready() : _corr.ready(); }
   bool scanReady() const { return _template ? _corr.ready() : _dcf.ready(); }

@@ -40,6 +40,15 @@ class PeakContrast {
     for (int i = 0; i < n; ++i) sum += ringScores[i];
     return scoreAt - sum / static_cast<float>(n);
   }
+  // The contrast at `estimate` (score c there), the ring's windows scored by score(Box).
+  template <class Score>
+  static float around(const Box& estimate, int imageW, int imageH, float scoreAt, Score score) {
+    Box boxes[kRing];
+    float scores[kRing];
+    const int k = ring(estimate, imageW, imageH, boxes);
+    for (int i = 0; i < k; ++i) scores[i] = score(boxes[i]);
+    return of(scoreAt, scores, k);
+  }
   static bool flat(float contrast) { return contrast < tuning::lost::kMinContrast; }
 };
 

@@ -14,6 +14,7 @@
 #include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/SizeFilter.hpp"
+#include "cuetrack/core/TrackResult.hpp"
 
 namespace cuetrack {
 
@@ -40,6 +41,10 @@ class Space {
   // A window no larger than the image, at least kMinWindowPx a side, half inside.
   Box sane(const Box& b) const { return saneWindow(b, _w, _h); }
   bool insideEnough(const Box& b) const { return LostSearch::insideEnough(b, _w, _h); }
+  // Whether window b can be scored: at least 4 px a side and touching the image; while
+  // searching (lost), mostly inside it (a window half outside scores on whatever its
+  // features read there).
+  bool scorable(const Box& b, bool searching) const;
   // The particle a track starts from, on window b (3D: standing at surfaceMm).
   Particle initial(const Box& b, float surfaceMm) const;
   // The training set's first positives: how many, and their jitter (fraction of a side).
@@ -63,6 +68,11 @@ class Space {
   const NegativeSampler::Cylinder* negativesCylinder(const IntegralChannels& channels,
                                                      const Particle& last,
                                                      NegativeSampler::Cylinder* out) const;
+  // 3D: the result's position is particle `at`'s, its depth predicted (not measured) when
+  // the inner half of its target box `targetBox` has too little valid depth in
+  // `channels` (tuning::kMinDepthSupport). 2D: no position.
+  void report(TrackResult* r, const Particle& at, const Box& targetBox,
+              const IntegralChannels& channels) const;
   // 2D: the estimate's size smoothed (SizeFilter2d); 3D: b as it is.
   void resetSize(const Box& b) { _sizeFilter.reset(b); }
   Box filterSize(const Box& b);

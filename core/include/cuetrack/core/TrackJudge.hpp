@@ -63,6 +63,9 @@ class TrackJudge {
   // Before an update: whether the target was lost, counting the frames it has been.
   bool beginFrame();
   int lostFrames() const { return _lostFrames; }  // since it was declared lost
+  // After the verdict: searching, or just found (wasLost), so the particles' velocities,
+  // including the jumps the depth correction gave search particles, are forgotten.
+  bool searching(bool wasLost) const { return _state == TrackState::Lost || wasLost; }
 
   // Lost detection, the update gate and the follow rule on estimate e; wasLost: from
   // beginFrame(); filterTracks: the track's cue is the correlation filter.

@@ -73,8 +73,6 @@ class Tracker {
   PixelRect predict(float dtS, int framesElapsed,
                     bool wasLost);                 // motion (+ search while lost); the ROI
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
-  // 3D: q's box has enough valid depth (tuning::kMinDepthSupport) for its depth to be measured.
-  bool depthMeasured(const Particle& q) const;
   // correlationCue: the cue's map; some particles at its peak. Its answer (invalid when none).
   CueAnswer correlate(float dtS);
   void scanLost(float dtS);  // ... while lost: the template over the image, tile by tile
