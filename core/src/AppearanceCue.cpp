@@ -25,8 +25,8 @@ Box AppearanceCue::scanTiles(const RgbView& rgb, const FrameTables& t, const Res
   return found;
 }
 
-void AppearanceCue::atWindows(const CueAnswer& a, const Box* windows, int n, float* out) const {
-  for (int i = 0; i < n; ++i) {
+void AppearanceCue::atWindows(const CueAnswer& a, Span<const Box> windows, Span<float> out) const {
+  for (int i = 0; i < windows.size(); ++i) {
     const Box& b = windows[i];
     const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
     out[i] = b.empty() ? CorrelationCue::kNoResponse : at(a, u, v);

@@ -140,13 +140,13 @@ void ParticleFilter::fill(const Particle& q) {
   }
 }
 
-void ParticleFilter::weigh(const float* scores, const float* cueScores) {
+void ParticleFilter::weigh(Span<const float> scores, Span<const float> cueScores) {
   const int n = _n;
   float cMax = -2.f;
   for (int i = 0; i < n; ++i)
     if (scores[i] > cMax) cMax = scores[i];
   float* w = _w;
-  if (cueScores != nullptr) {
+  if (!cueScores.empty()) {
     float rMax = -2.f;
     for (int i = 0; i < n; ++i)
       if (cueScores[i] > rMax) rMax = cueScores[i];
@@ -158,7 +158,7 @@ void ParticleFilter::weigh(const float* scores, const float* cueScores) {
   }
 }
 
-float ParticleFilter::concentration(const Box* boxes, const Box& estimate) const {
+float ParticleFilter::concentration(Span<const Box> boxes, const Box& estimate) const {
   float concentration = 0.f, wsum = 0.f;
   for (int i = 0; i < _n; ++i) {
     concentration += _w[i] * overlap(boxes[i], estimate);

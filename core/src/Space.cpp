@@ -64,7 +64,7 @@ void Space::keepSane(Particle& q) const {
 }
 
 void Space::correctDepths(bool hasDepth, float dtS, const IntegralChannels& channels,
-                          const FastMotion& fast, ParticleFilter& filter, Box* boxes) const {
+                          const FastMotion& fast, ParticleFilter& filter, Span<Box> boxes) const {
   if (!_is3d || !hasDepth) return;
   // Pull each particle onto the measured surface (paper eq. 2).
   const int n = filter.size();

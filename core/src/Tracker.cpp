@@ -34,10 +34,6 @@ ConfigError Tracker::configure(const TrackerConfig& config, uint64_t seed, const
   return ConfigError::None;
 }
 
-const TrackerConfig& Tracker::config() const {
-  return _config;
-}
-
 void Tracker::reset() {
   _judge.reset();
   _lastBox = Box{};
@@ -132,18 +128,19 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
   _fast.beginFrame(_space.is3d(), dtS);
   const SearchView view = _space.view();
   const int n = _filter.size();
+  _p.resize(n);
   for (int i = 0; i < n; ++i) {
     Particle& q = _filter[i];
     if (wasLost && LostSearch::drawsAnew(i))
       q = LostSearch::draw(i, _lastEstimate, _judge.lostFrames(), view, _rng);
     _space.predict(i, q, _fast, _rng, dtS, spread, framesElapsed);
-    _boxes[i] = _space.window(q);
+    _p.boxes[i] = _space.window(q);
   }
   // The cue searches around the last estimate; lost, the whole image, a few tiles a frame.
   const bool aroundLast = _cue.enabled() && !wasLost && _cue.trackingReady();
   const Box cueRegion = aroundLast ? _cue.region(_lastBox) : Box{};
-  return SearchRegion::of(_boxes, n, aroundLast ? &cueRegion : nullptr, _cue.enabled() && wasLost,
-                          _space.imageW(), _space.imageH());
+  return SearchRegion::of(_p.boxes.span(), aroundLast ? &cueRegion : nullptr,
+                          _cue.enabled() && wasLost, _space.imageW(), _space.imageH());
 }
 
 bool Tracker::scorable(const Box& b, const Particle& q, bool searching) const {
@@ -154,20 +151,20 @@ bool Tracker::scorable(const Box& b, const Particle& q, bool searching) const {
 
 void Tracker::score(const PixelRect& roi, bool wasLost) {
   const int n = _filter.size();
-  for (int i = 0; i < n; ++i) _valid[i] = scorable(_boxes[i], _filter[i], wasLost) ? 1 : 0;
-  _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores,
-                       _scanOrder.sort(_boxes, n, roi.y0));
+  for (int i = 0; i < n; ++i) _p.valid[i] = scorable(_p.boxes[i], _filter[i], wasLost) ? 1 : 0;
+  _strong.evaluateMany(_channels.tables(), _p.boxes.span(), _p.valid.span(), _p.scores.span(),
+                       _scanOrder.sort(_p.boxes.span(), roi.y0));
 }
 
 TrackEstimate Tracker::estimate(const CueAnswer& cue) {
-  _filter.weigh(_scores, cue.valid ? _corrScores : nullptr);
+  _filter.weigh(_p.scores.span(), cue.valid ? _p.cue.span() : Span<const float>{});
   // The weighted mean (the paper takes the heaviest particle: docs/experiments.md).
   TrackEstimate e;
   e.particle = _filter.weightedMean();
   e.box = _space.window(e.particle);
   const float c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
   e.box = _space.filterSize(e.box);
-  e.concentration = _filter.concentration(_boxes, e.box);
+  e.concentration = _filter.concentration(_p.boxes.span(), e.box);
   e.confidence = 0.5f * (c + 1.f);
   e.contrast = PeakContrast::kNoRing;
   if (_config.lostDetection)
@@ -202,17 +199,19 @@ void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVel
   // Mostly inside the image even while tracking, as the cue's peaks are (while searching,
   // scorable() asks that already).
   const bool searching = _judge.state() == TrackState::Lost;
+  _moved.resize(moved);
   for (int k = 0; k < moved; ++k) {
     const int i = _reseeder.index(k);
-    _boxes[i] = _reseeder.windows()[k];
-    _movedValid[k] =
-        scorable(_boxes[i], _filter[i], searching) && (searching || _space.insideEnough(_boxes[i]))
-            ? 1
-            : 0;
+    _p.boxes[i] = _moved.boxes[k] = _reseeder.windows()[k];
+    _moved.valid[k] = scorable(_p.boxes[i], _filter[i], searching) &&
+                              (searching || _space.insideEnough(_p.boxes[i]))
+                          ? 1
+                          : 0;
   }
-  _strong.evaluateMany(_channels.tables(), _reseeder.windows(), _movedValid, moved, _movedScores);
+  _strong.evaluateMany(_channels.tables(), _moved.boxes.span(), _moved.valid.span(),
+                       _moved.scores.span());
   for (int k = 0; k < moved; ++k)
-    _scores[_reseeder.index(k)] = _movedValid[k] != 0 ? _movedScores[k] : -1.f;
+    _p.scores[_reseeder.index(k)] = _moved.valid[k] != 0 ? _moved.scores[k] : -1.f;
 }
 
 CueAnswer Tracker::correlate(float dtS) {
@@ -222,7 +221,7 @@ CueAnswer Tracker::correlate(float dtS) {
   // Some particles onto the peak, when there is one (the target may have jumped where the
   // cloud did not reach), moving on as it jumped.
   if (a.strong()) drawAt(a.box, _prevEstimate, dtS, true);
-  _cue.atWindows(a, _boxes, _filter.size(), _corrScores);
+  _cue.atWindows(a, _p.boxes.span(), _p.cue.span());
   return a;
 }
 
@@ -258,7 +257,7 @@ TrackResult Tracker::update(const Frame& frame) {
   const uint64_t t1 = now();
   _channels.compute(frame, roi, _depthTables);
   const uint64_t t2 = now();
-  _space.correctDepths(frame.hasDepth(), dtS, _channels, _fast, _filter, _boxes);
+  _space.correctDepths(frame.hasDepth(), dtS, _channels, _fast, _filter, _p.boxes.span());
   const uint64_t t3 = now();
   score(roi, wasLost);
   const CueAnswer cue = _cue.enabled() && !wasLost ? correlate(dtS) : CueAnswer{};

@@ -271,7 +271,7 @@ TEST_CASE("ScanOrder: windows by 8 px row band, stable within a band", "[core][s
                         {0.f, 1.f, 8.f, 8.f},
                         {0.f, -30.f, 8.f, 8.f}};
   static ScanOrder s;
-  const uint16_t* order = s.sort(boxes, 5, 0);
+  const uint16_t* order = s.sort(Span<const Box>(boxes, 5), 0);
   CHECK(order[0] == 1);  // band 0: 1, 3, 4 (above the ROI counts as band 0), in index order
   CHECK(order[1] == 3);
   CHECK(order[2] == 4);
@@ -337,12 +337,13 @@ TEST_CASE("PeakContrast: the ring is the four windows one side away inside the i
 TEST_CASE("PeakContrast: a peak stands out, a plateau does not", "[core][components]") {
   const float background[4] = {-0.8f, -0.6f, -0.9f, -0.7f};
   const float plateau[4] = {0.05f, -0.02f, 0.01f, 0.f};
-  CHECK(PeakContrast::of(0.6f, background, 4) == Approx(1.35f));
-  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, background, 4)));
-  CHECK(PeakContrast::flat(PeakContrast::of(0.02f, plateau, 4)));  // a plain wall
+  CHECK(PeakContrast::of(0.6f, Span<const float>(background, 4)) == Approx(1.35f));
+  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, Span<const float>(background, 4))));
+  CHECK(
+      PeakContrast::flat(PeakContrast::of(0.02f, Span<const float>(plateau, 4))));  // a plain wall
   // A look-alike beside the target on one side only still leaves it standing out.
   const float oneTwin[4] = {0.6f, -0.8f, -0.8f, -0.8f};
-  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, oneTwin, 4)));
+  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, Span<const float>(oneTwin, 4))));
   // Nothing to compare with: taken to stand out.
-  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.f, background, 0)));
+  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.f, Span<const float>(background, 0))));
 }

@@ -170,22 +170,22 @@ TEST_CASE("SearchRegion: the windows grown by their mean size, the cue's region,
           "[core][searchregion]") {
   const Box windows[3] = {{50.f, 40.f, 10.f, 10.f}, {}, {60.f, 50.f, 10.f, 10.f}};
   // Mean size over all 3 (the empty one too): 20/3 px; grown kRoiMarginSides of it.
-  const PixelRect r = SearchRegion::of(windows, 3, nullptr, false, W, H);
+  const PixelRect r = SearchRegion::of(Span<const Box>(windows, 3), nullptr, false, W, H);
   const int grow = static_cast<int>(tuning::kRoiMarginSides * 20.f / 3.f);
   CHECK(r.x0 <= 50 - grow);
   CHECK(r.x0 >= 50 - grow - 1);
   CHECK(r.x1 >= 70 + grow);
   CHECK(r.y0 <= 40 - grow);
   const Box cue{0.f, 0.f, 20.f, 20.f};
-  const PixelRect withCue = SearchRegion::of(windows, 3, &cue, false, W, H);
+  const PixelRect withCue = SearchRegion::of(Span<const Box>(windows, 3), &cue, false, W, H);
   CHECK(withCue.x0 == 0);
   CHECK(withCue.y0 == 0);
   CHECK(withCue.x1 == r.x1);
-  const PixelRect lost = SearchRegion::of(windows, 3, nullptr, true, W, H);
+  const PixelRect lost = SearchRegion::of(Span<const Box>(windows, 3), nullptr, true, W, H);
   CHECK((lost.x0 == 0 && lost.y0 == 0 && lost.x1 == W && lost.y1 == H));
   // No window: the whole image rather than a degenerate region.
   const Box none1[1] = {Box{}};
-  const PixelRect none = SearchRegion::of(none1, 1, nullptr, false, W, H);
+  const PixelRect none = SearchRegion::of(Span<const Box>(none1, 1), nullptr, false, W, H);
   CHECK((none.x0 == 0 && none.y0 == 0 && none.x1 == W && none.y1 == H));
 }
 

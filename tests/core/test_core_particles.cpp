@@ -300,8 +300,8 @@ TEST_CASE("weigh: the best score weighs 1, the cue's map shifts the weights; con
   static ParticleFilter f;  // large: static storage
   f.setSize(3);
   const float scores[3] = {0.5f, 0.2f, 0.5f};
-  f.weigh(scores, nullptr);
-  CHECK(f.weights()[0] == 1.f);  // exp(0)
+  f.weigh(scores, Span<const float>{});  // the cue did not answer
+  CHECK(f.weights()[0] == 1.f);          // exp(0)
   CHECK(f.weights()[1] < f.weights()[0]);
   CHECK(f.weights()[2] == f.weights()[0]);
   const float cue[3] = {0.9f, 0.9f, 0.1f};  // the cue prefers particles 0 and 1

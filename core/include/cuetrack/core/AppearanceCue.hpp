@@ -68,8 +68,8 @@ class AppearanceCue {
   float at(const CueAnswer& a, float u, float v) const {
     return a.byTemplate ? _corr.at(u, v) : _dcf.at(u, v);
   }
-  // at() at the centre of each of windows[n] into out[n] (an empty window: kNoResponse).
-  void atWindows(const CueAnswer& a, const Box* windows, int n, float* out) const;
+  // at() at the centre of each window into out (as many; an empty window: kNoResponse).
+  void atWindows(const CueAnswer& a, Span<const Box> windows, Span<float> out) const;
   // Whether the tracking cue, the scanning one, has a model.
   bool trackingReady() const { return _filter ? _dcf.ready() : _corr.ready(); }
   bool scanReady() const { return _template ? _corr.ready() : _dcf.ready(); }

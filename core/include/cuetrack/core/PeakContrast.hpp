@@ -9,6 +9,7 @@
 
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/core/LostSearch.hpp"
+#include "cuetrack/core/Span.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
@@ -33,8 +34,9 @@ class PeakContrast {
       if (LostSearch::insideEnough(r, imageW, imageH)) out[n++] = r;
     return n;
   }
-  // scoreAt: the classifier's score c in [-1, 1] at the estimate; ringScores[n].
-  static float of(float scoreAt, const float* ringScores, int n) {
+  // scoreAt: the classifier's score c in [-1, 1] at the estimate; the ring's scores.
+  static float of(float scoreAt, Span<const float> ringScores) {
+    const int n = ringScores.size();
     if (n <= 0) return kNoRing;
     float sum = 0.f;
     for (int i = 0; i < n; ++i) sum += ringScores[i];
@@ -47,7 +49,7 @@ class PeakContrast {
     float scores[kRing];
     const int k = ring(estimate, imageW, imageH, boxes);
     for (int i = 0; i < k; ++i) scores[i] = score(boxes[i]);
-    return of(scoreAt, scores, k);
+    return of(scoreAt, Span<const float>(scores, k));
   }
   static bool flat(float contrast) { return contrast < tuning::lost::kMinContrast; }
 };

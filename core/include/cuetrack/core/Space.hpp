@@ -62,7 +62,7 @@ class Space {
   // boxes[i] its new window; a fast-motion jump that landed on another surface undone.
   // 2D, or no depth: nothing.
   void correctDepths(bool hasDepth, float dtS, const IntegralChannels& channels,
-                     const FastMotion& fast, ParticleFilter& filter, Box* boxes) const;
+                     const FastMotion& fast, ParticleFilter& filter, Span<Box> boxes) const;
   // 3D: the cylinder the negatives are drawn around (the last learnt estimate's size),
   // written to *out and returned; 2D: null.
   const NegativeSampler::Cylinder* negativesCylinder(const IntegralChannels& channels,

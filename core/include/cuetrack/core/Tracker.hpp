@@ -24,6 +24,7 @@
 #include "cuetrack/core/LostSearch.hpp"
 #include "cuetrack/core/NegativeSampler.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
+#include "cuetrack/core/ParticleScratch.hpp"
 #include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
@@ -55,7 +56,7 @@ class Tracker {
   InitError init(const Frame& frame, const Box& box);
   TrackResult update(const Frame& frame);
   void reset();  // back to Idle; keeps the configuration
-  const TrackerConfig& config() const;
+  const TrackerConfig& config() const { return _config; }
 
   // Whether the running track uses the 3D state / depth features (after any fallback).
   bool uses3d() const { return _space.is3d(); }
@@ -111,13 +112,11 @@ class Tracker {
   Box _lastBox{};            // the window tracked (padded for a small target)
   WindowPadding _padding{};  // target -> window, for a target under kMinTrackedSidePx
   Particle _lastEstimate{};
-  Particle _prevEstimate{};          // the last frame's estimate (correlate() moves it)
-  AppearanceCue _cue;                // correlationCue: the filter (and template), or the template
-  RgbView _rgb{};                    // update()'s colour image, for the filter
-  float _corrScores[kMaxParticles];  // the cue's response at each particle
-  Reseeder _reseeder;                // particles at the cue's peak; the lost scan's tiles
-  uint8_t _movedValid[Reseeder::kMaxMoved];  // ... whether each is scored
-  float _movedScores[Reseeder::kMaxMoved];
+  Particle _prevEstimate{};  // the last frame's estimate (correlate() moves it)
+  AppearanceCue _cue;        // correlationCue: the filter (and template), or the template
+  RgbView _rgb{};            // update()'s colour image, for the filter
+  Reseeder _reseeder;        // particles at the cue's peak; the lost scan's tiles
+  WindowScratch<Reseeder::kMaxMoved> _moved;  // ... their windows and scores
 
   IntegralChannels _channels;
   FeaturePool _pool;
@@ -125,9 +124,7 @@ class Tracker {
   ResponseCache _cache;
   StrongClassifier _strong;
   ParticleFilter _filter;
-  Box _boxes[kMaxParticles];
-  float _scores[kMaxParticles];
-  uint8_t _valid[kMaxParticles];
+  ParticleScratch _p;  // this update's windows, scores and the cue's map, per particle
   ScanOrder _scanOrder;
   float _featureErrors[kMaxPoolFeatures];
   NegativeSampler _negatives{};
