@@ -246,9 +246,9 @@ TEST_CASE("LostSearch: a 3D draw keeps the depth and lands on a ray inside the i
 }
 
 TEST_CASE("LostSearch: windows mostly outside the image are not scored", "[core][lostsearch]") {
-  CHECK(LostSearch::insideEnough(Box{10.f, 10.f, 50.f, 50.f}, 640, 480));
-  CHECK(LostSearch::insideEnough(Box{-5.f, 10.f, 50.f, 50.f}, 640, 480));         // 90% inside
-  CHECK_FALSE(LostSearch::insideEnough(Box{-25.f, 10.f, 50.f, 50.f}, 640, 480));  // half
+  CHECK(insideEnough(Box{10.f, 10.f, 50.f, 50.f}, 640, 480));
+  CHECK(insideEnough(Box{-5.f, 10.f, 50.f, 50.f}, 640, 480));         // 90% inside
+  CHECK_FALSE(insideEnough(Box{-25.f, 10.f, 50.f, 50.f}, 640, 480));  // half
 }
 
 TEST_CASE("DepthMedian: the median of the valid depth inside the box, to 10 mm",

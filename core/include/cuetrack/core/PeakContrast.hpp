@@ -8,7 +8,6 @@
 #pragma once
 
 #include "cuetrack/core/Geometry.hpp"
-#include "cuetrack/core/LostSearch.hpp"
 #include "cuetrack/core/Span.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
@@ -31,7 +30,7 @@ class PeakContrast {
     int n = 0;
     if (b.empty()) return 0;
     for (const Box& r : all)
-      if (LostSearch::insideEnough(r, imageW, imageH)) out[n++] = r;
+      if (insideEnough(r, imageW, imageH)) out[n++] = r;
     return n;
   }
   // scoreAt: the classifier's score c in [-1, 1] at the estimate; the ring's scores.

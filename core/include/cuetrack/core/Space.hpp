@@ -40,7 +40,7 @@ class Space {
   Box window(const Particle& q) const { return particleWindow(q, _is3d, _k); }
   // A window no larger than the image, at least kMinWindowPx a side, half inside.
   Box sane(const Box& b) const { return saneWindow(b, _w, _h); }
-  bool insideEnough(const Box& b) const { return LostSearch::insideEnough(b, _w, _h); }
+  bool insideEnough(const Box& b) const { return cuetrack::insideEnough(b, _w, _h); }
   // Whether window b can be scored: at least 4 px a side and touching the image; while
   // searching (lost), mostly inside it (a window half outside scores on whatever its
   // features read there).
