@@ -82,6 +82,13 @@ bool CellFeatures::extract(const RgbView& rgb, const Box& win, float (*out)[kFft
       cb[j] = (0.5f * (R + G) - B) * kInv255;
     }
   }
+  gradients();
+  cells(out);
+  normalise(out);
+  return true;
+}
+
+void CellFeatures::gradients() {
   // Gradients (central differences, one-sided at the border): magnitude and unsigned
   // orientation bin (the boundaries it is past, counted: no angle, no branch).
   for (int i = 0; i < S; ++i) {
@@ -107,6 +114,9 @@ bool CellFeatures::extract(const RgbView& rgb, const Box& win, float (*out)[kFft
     // Signed: bin k of 2 kBins centred at k pi / 9 over the whole circle.
     _bin[k] = static_cast<uint8_t>(flip ? (past + kBins) % (2 * kBins) : past);
   }
+}
+
+void CellFeatures::cells(float (*out)[kFftSize]) {
   // Cells: the orientation histograms, mean gray and colour.
   for (int c = 0; c < kFftSize; ++c)
     for (int o = 0; o < 2 * kBins; ++o) _hist[c][o] = 0.f;
@@ -130,6 +140,9 @@ bool CellFeatures::extract(const RgbView& rgb, const Box& win, float (*out)[kFft
       out[kColourChannel + 1][c] = bsum * perCell;
     }
   }
+}
+
+void CellFeatures::normalise(float (*out)[kFftSize]) {
   // Unsigned: a direction and its opposite together; the energy from them.
   for (int c = 0; c < kFftSize; ++c) {
     float e = 0.f;
@@ -165,7 +178,6 @@ bool CellFeatures::extract(const RgbView& rgb, const Box& win, float (*out)[kFft
         for (int o = 0; o < 2 * kBins; ++o) out[o][c] = normalised(_hist[c][o], inv);
     }
   }
-  return true;
 }
 
 }  // namespace cuetrack

@@ -6,21 +6,6 @@
 
 namespace cuetrack {
 
-PixelRect clipBox(const Box& b, int w, int h) {
-  PixelRect r;
-  r.x0 = fmath::floorToInt(b.x);
-  r.y0 = fmath::floorToInt(b.y);
-  r.x1 = fmath::floorToInt(b.x + b.w) + 1;
-  r.y1 = fmath::floorToInt(b.y + b.h) + 1;
-  if (r.x0 < 0) r.x0 = 0;
-  if (r.y0 < 0) r.y0 = 0;
-  if (r.x1 > w) r.x1 = w;
-  if (r.y1 > h) r.y1 = h;
-  if (r.x1 < r.x0) r.x1 = r.x0;
-  if (r.y1 < r.y0) r.y1 = r.y0;
-  return r;
-}
-
 IntegralChannels::IntegralChannels() {
   std::memset(_gray, 0, sizeof(_gray));
   std::memset(_alpha2, 0, sizeof(_alpha2));

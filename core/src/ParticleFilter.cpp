@@ -140,6 +140,33 @@ void ParticleFilter::fill(const Particle& q) {
   }
 }
 
+void ParticleFilter::weigh(Span<const float> scores, Span<const float> cueScores) {
+  const int n = _n;
+  float cMax = -2.f;
+  for (int i = 0; i < n; ++i)
+    if (scores[i] > cMax) cMax = scores[i];
+  float* w = _w;
+  if (!cueScores.empty()) {
+    float rMax = -2.f;
+    for (int i = 0; i < n; ++i)
+      if (cueScores[i] > rMax) rMax = cueScores[i];
+    for (int i = 0; i < n; ++i)
+      w[i] = fmath::fastExp(tuning::kWeightGain * (scores[i] - cMax) +
+                            tuning::correlation::kResponseGain * (cueScores[i] - rMax));
+  } else {
+    for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(tuning::kWeightGain * (scores[i] - cMax));
+  }
+}
+
+float ParticleFilter::concentration(Span<const Box> boxes, const Box& estimate) const {
+  float concentration = 0.f, wsum = 0.f;
+  for (int i = 0; i < _n; ++i) {
+    concentration += _w[i] * overlap(boxes[i], estimate);
+    wsum += _w[i];
+  }
+  return wsum > 0.f ? concentration / wsum : 0.f;
+}
+
 void ParticleFilter::resample(Rng& rng) {
   float total = 0.f;
   for (int i = 0; i < _n; ++i) total += _w[i];

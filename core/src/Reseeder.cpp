@@ -39,6 +39,7 @@ int Reseeder::place(const Box& c, const Particle& from, float dtS, bool withVelo
     _windows[moved] = view.window(q);
     ++moved;
   }
+  _moved = moved;
   return moved;
 }
 

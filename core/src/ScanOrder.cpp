@@ -4,7 +4,8 @@
 
 namespace cuetrack {
 
-const uint16_t* ScanOrder::sort(const Box* boxes, int n, int roiY0) {
+const uint16_t* ScanOrder::sort(Span<const Box> boxes, int roiY0) {
+  const int n = boxes.size();
   uint16_t start[kBands + 1] = {};
   for (int i = 0; i < n; ++i) {
     int band = (fmath::floorToInt(boxes[i].y) - roiY0) >> kBandShift;

@@ -4,8 +4,9 @@
 
 namespace cuetrack {
 
-PixelRect SearchRegion::of(const Box* windows, int n, const Box* cueRegion, bool wholeImage,
+PixelRect SearchRegion::of(Span<const Box> windows, const Box* cueRegion, bool wholeImage,
                            int imageW, int imageH) {
+  const int n = windows.size();
   PixelRect roi{};
   float meanW = 0.f, meanH = 0.f;
   for (int i = 0; i < n; ++i) {

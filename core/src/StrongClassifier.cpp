@@ -22,6 +22,49 @@ void StrongClassifier::findDistinct() {
   }
 }
 
+namespace {
+// The whole pool ranked under weights w: the feature of least error (returned, its error
+// in *bestErrOut), the `candidates` lowest errors in ascending order into cand and candErr
+// (*numCand of them; ties keep pool order), and every feature's error into
+// featureErrors (when not null).
+int rankPool(const FeaturePool& pool, const ResponseCache& cache, const float* w, int split, int n,
+             int candidates, float* featureErrors, int* cand, float* candErr, int* numCand,
+             float* bestErrOut) {
+  int best = -1;
+  float bestErr = 0.f;
+  int nc = 0;
+  float e4[4];
+  for (int f = 0; f < pool.size(); ++f) {
+    if (f % 4 == 0 && f + 4 <= pool.size()) {
+      const Code* rows[4] = {cache.row(f), cache.row(f + 1), cache.row(f + 2), cache.row(f + 3)};
+      WeakClassifier::binnedErrorSplit4(rows, w, split, n, e4);
+    }
+    const float e = f - f % 4 + 4 <= pool.size()
+                        ? e4[f % 4]
+                        : WeakClassifier::binnedErrorSplit(cache.row(f), w, split, n);
+    if (featureErrors != nullptr) featureErrors[f] = e;
+    if (best < 0 || e < bestErr) {
+      best = f;
+      bestErr = e;
+    }
+    // Keep the `candidates` lowest errors (insertion; ties keep pool order).
+    if (nc < candidates || e < candErr[nc - 1]) {
+      int j = nc < candidates ? nc++ : nc - 1;
+      while (j > 0 && candErr[j - 1] > e) {
+        cand[j] = cand[j - 1];
+        candErr[j] = candErr[j - 1];
+        --j;
+      }
+      cand[j] = f;
+      candErr[j] = e;
+    }
+  }
+  *numCand = nc;
+  *bestErrOut = bestErr;
+  return best;
+}
+}  // namespace
+
 bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache,
                              const TrainingSet& set, int m, float* featureErrors, int candidates,
                              float anchorWeight, int refreshRounds) {
@@ -55,34 +98,9 @@ bool StrongClassifier::train(const FeaturePool& pool, const ResponseCache& cache
     int best = -1;
     float bestErr = 0.f;
     if (round == 0 || (refreshRounds > 0 && round % refreshRounds == 0)) {
-      numCand = 0;  // rank the whole pool under the current weights
-      float e4[4];
-      for (int f = 0; f < pool.size(); ++f) {
-        if (f % 4 == 0 && f + 4 <= pool.size()) {
-          const Code* rows[4] = {cache.row(f), cache.row(f + 1), cache.row(f + 2),
-                                 cache.row(f + 3)};
-          WeakClassifier::binnedErrorSplit4(rows, w, split, n, e4);
-        }
-        const float e = f - f % 4 + 4 <= pool.size()
-                            ? e4[f % 4]
-                            : WeakClassifier::binnedErrorSplit(cache.row(f), w, split, n);
-        if (featureErrors != nullptr && round == 0) featureErrors[f] = e;
-        if (best < 0 || e < bestErr) {
-          best = f;
-          bestErr = e;
-        }
-        // Keep the `candidates` lowest errors (insertion; ties keep pool order).
-        if (numCand < candidates || e < candErr[numCand - 1]) {
-          int j = numCand < candidates ? numCand++ : numCand - 1;
-          while (j > 0 && candErr[j - 1] > e) {
-            cand[j] = cand[j - 1];
-            candErr[j] = candErr[j - 1];
-            --j;
-          }
-          cand[j] = f;
-          candErr[j] = e;
-        }
-      }
+      // Rank the whole pool under the current weights.
+      best = rankPool(pool, cache, w, split, n, candidates, round == 0 ? featureErrors : nullptr,
+                      cand, candErr, &numCand, &bestErr);
     } else {
       float e4[4];
       for (int k = 0; k < numCand; ++k) {

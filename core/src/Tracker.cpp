@@ -1,6 +1,6 @@
 #include "cuetrack/core/Tracker.hpp"
 
-#include "cuetrack/core/MissRule.hpp"
+#include "cuetrack/core/InitTarget.hpp"
 #include "cuetrack/core/PeakContrast.hpp"
 #include "cuetrack/core/SearchRegion.hpp"
 #include "cuetrack/core/SpaceChoice.hpp"
@@ -25,33 +25,18 @@ ConfigError Tracker::configure(const TrackerConfig& config, uint64_t seed, const
   _config = config;
   _seed = seed;
   _clock = clock;
-  _motion3d.sizeNoise = _config.adaptCylinderSize ? tuning::cylinder::kSizeNoise : 0.f;
-  _sizeFilter.configure(tuning::size2d::kGain, tuning::size2d::kRateGain);
+  _space.configure(_config.adaptCylinderSize);
   _sizer.configure(tuning::cylinder::kSizeGain, tuning::cylinder::kCentreGain);
   _negatives.configure(NegativeSampler::paramsOf(_config));
+  _judge.configure(_config.lostDetection, _config.occlusionGate);
   _fast.configure(_config.fastMotion);
   reset();
   return ConfigError::None;
 }
 
-const TrackerConfig& Tracker::config() const {
-  return _config;
-}
-
 void Tracker::reset() {
-  _state = TrackState::Idle;
-  _lost.reset();
+  _judge.reset();
   _lastBox = Box{};
-  _lostFrames = 0;
-  _hold.stop();
-}
-
-Box Tracker::clampToImage(const Box& b) const {
-  return saneWindow(b, _imageW, _imageH);
-}
-
-Box Tracker::particleBox(const Particle& q) const {
-  return particleWindow(q, _is3d, _k);
 }
 
 void Tracker::addExample(const Box& win, bool positive) {
@@ -60,85 +45,56 @@ void Tracker::addExample(const Box& win, bool positive) {
 }
 
 void Tracker::addNegatives(const Box& around, int count, const PixelRect& roi) {
-  NegativeSampler::Cylinder cylinder;
-  if (_is3d) {
-    cylinder.channels = &_channels;
-    cylinder.k = _k;
-    cylinder.diameterMm = _lastEstimate.size[0];
-    cylinder.heightMm = _lastEstimate.size[1];
-    cylinder.imageW = _imageW;
-    cylinder.imageH = _imageH;
-  }
+  NegativeSampler::Cylinder store;
+  const NegativeSampler::Cylinder* cylinder =
+      _space.negativesCylinder(_channels, _lastEstimate, &store);
   for (int k = 0; k < count; ++k)
-    addExample(_negatives.next(k, around, roi, _is3d ? &cylinder : nullptr, _rng), false);
+    addExample(_negatives.next(k, around, roi, cylinder, _rng), false);
 }
 
 InitError Tracker::init(const Frame& frame, const Box& box) {
-  _state = TrackState::Idle;
-  if (frame.rgb.empty()) return InitError::NoColour;
-  if (frame.rgb.width > kMaxImageWidth || frame.rgb.height > kMaxImageHeight)
-    return InitError::ImageTooLarge;
-  if (box.empty()) return InitError::EmptyBox;
-  _imageW = frame.rgb.width;
-  _imageH = frame.rgb.height;
-  // Intersect the box with the image.
-  const float x0 = fmath::clampf(box.x, 0.f, static_cast<float>(_imageW));
-  const float y0 = fmath::clampf(box.y, 0.f, static_cast<float>(_imageH));
-  const float x1 = fmath::clampf(box.x + box.w, 0.f, static_cast<float>(_imageW));
-  const float y1 = fmath::clampf(box.y + box.h, 0.f, static_cast<float>(_imageH));
-  if (!(x1 > x0) || !(y1 > y0)) return InitError::BoxOutsideImage;
-  const Box target{x0, y0, x1 - x0, y1 - y0};
-  if (target.w < kMinTargetPx || target.h < kMinTargetPx) return InitError::BoxTooSmall;
+  _judge.stop();
+  Box target;
+  if (const InitError e = initTarget(frame.rgb, box, &target); e != InitError::None) return e;
+  const int imageW = frame.rgb.width, imageH = frame.rgb.height;
   _padding = WindowPadding::forTarget(target);
   const Box b = _padding.toWindow(target);  // the window tracked
 
   const SpaceChoice space = SpaceChoice::of(_config, frame, b, _depthMedian);
   if (space.error != InitError::None) return space.error;
-  _is3d = space.is3d;
-  _depthFeatures = space.depthFeatures;
-  _fallbackWhy = space.why;
-  _filterLeads = !_is3d && _config.filterLeads2d;
+  _space.start(space.is3d, frame.intrinsics, imageW, imageH);
+  _filterLeads = !space.is3d && _config.filterLeads2d;
   if (_filterLeads) {
-    const InitError e = _lead.init(frame, target);
-    if (e != InitError::None) return e;
+    if (const InitError e = _lead.init(frame, target); e != InitError::None) return e;
+    if (!_config.lostDetection) {  // dcf: nothing to judge the filter by
+      _lastTimeUs = frame.timeUs;
+      _judge.start(false, space.lostAfter, frame.timeUs, _space.initial(b, 0.f));
+      return InitError::None;
+    }
   }
+  _depthFeatures = space.depthFeatures;
+  _depthTables = space.depthFeatures || space.is3d;
+  _fallbackWhy = space.why;
   _numWeak = space.numWeak;
-  _lost.lostAfter = space.lostAfter;
-  _k = frame.intrinsics;
   _rng.reseed(_seed);
-  _lost.reset();
-  _lostFrames = 0;
   _reseeder.restartScan();
-  _peakLevel.reset();
 
-  Particle q;
-  if (_is3d) {
-    q = cylinderFromBox(b, space.surfaceMm, _k);
-  } else {
-    q.p[0] = b.x + 0.5f * b.w;
-    q.p[1] = b.y + 0.5f * b.h;
-    q.size[0] = b.w;
-    q.size[1] = b.h;
-  }
+  const Particle q = _space.initial(b, space.surfaceMm);
   _lastEstimate = q;
-  _hold.start(frame.timeUs, q);
   _prevEstimate = q;
-  _depthGuard.reset(q.p[2]);
   _lastBox = b;
-  _sizeFilter.reset(b);
+  _space.resetSize(b);
 
-  const PixelRect roi = clipBox(grow(b, NegativeSampler::kRange + 0.6f), _imageW, _imageH);
-  _channels.compute(frame, roi, _depthFeatures || _is3d);
+  const PixelRect roi = clipBox(grow(b, NegativeSampler::kRange + 0.6f), imageW, imageH);
+  _channels.compute(frame, roi, _depthTables);
 
   if (!_pool.build(_config.useGray, _depthFeatures, _config.useColour, _config.sampling, _rng))
     return InitError::BoxTooSmall;  // cannot happen with kMaxPoolFeatures (static_assert-backed)
-  const int anchors =
-      _is3d ? tuning::training::kInitialPositives3d : tuning::training::kInitialPositives2d;
+  const int anchors = _space.initialPositives();
   _set.reset(tuning::training::kExamples, anchors);
   addExample(b, true);  // slot 0: the anchor
   for (int i = 1; i < anchors; ++i) {
-    const float jitter =
-        _is3d ? tuning::training::kInitialJitter3d : tuning::training::kInitialJitter2d;
+    const float jitter = _space.initialJitter();
     const float s = fmath::fastExp(jitter * _rng.gaussian());
     const Box j{b.x + jitter * b.w * _rng.gaussian(), b.y + jitter * b.h * _rng.gaussian(), b.w * s,
                 b.h * s};
@@ -147,17 +103,16 @@ InitError Tracker::init(const Frame& frame, const Box& box) {
   addNegatives(b, _set.numNegatives() + tuning::training::kExamples, roi);  // fill the FIFO
   for (int i = 0; i < kMaxPoolFeatures; ++i) _featureErrors[i] = 0.f;
   train();
-  _cue.start(_config.correlationCue, _config.correlationFilter, _is3d, frame.rgb,
+  _cue.start(_config.correlationCue, _config.correlationFilter, _space.is3d(), frame.rgb,
              _channels.tables(), b);
 
   _sizer.clear();
-  if (_is3d && _config.adaptCylinderSize && frame.hasDepth())
-    _sizer.calibrate(frame, _channels, b, q.size[0]);
+  if (_space.sizesCylinder() && frame.hasDepth()) _sizer.calibrate(frame, _channels, b, q.size[0]);
   _filter.setSize(_config.numParticles);
   _filter.fill(q);
   _lastTimeUs = frame.timeUs;
   _fast.start();
-  _state = TrackState::Tracking;
+  _judge.start(space.is3d, space.lostAfter, frame.timeUs, q);
   return InitError::None;
 }
 
@@ -179,347 +134,214 @@ void Tracker::train() {
 
 PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
   const float spread = wasLost ? tuning::kLostSpread : 1.f;
-  _fast.beginFrame(_is3d, dtS);
-  const SearchView view = searchView();
+  _fast.beginFrame(_space.is3d(), dtS);
+  const SearchView view = _space.view();
   const int n = _filter.size();
+  _p.resize(n);
   for (int i = 0; i < n; ++i) {
     Particle& q = _filter[i];
     if (wasLost && LostSearch::drawsAnew(i))
-      q = LostSearch::draw(i, _lastEstimate, _lostFrames, view, _rng);
-    if (_is3d) {
-      _motion3d.predict(q, _rng, dtS, spread);
-      _fast.jump3d(i, q, _motion3d, _rng, dtS);
-      keepInView(q, _k, _imageW, _imageH);
-    } else {
-      _motion2d.predict(q, _rng, spread, framesElapsed);
-      _fast.jump2d(i, q, _motion2d, _rng);
-      // Keep windows sane and near the image.
-      const Box c = clampToImage(particleBox(q));
-      q.p[0] = c.x + 0.5f * c.w;
-      q.p[1] = c.y + 0.5f * c.h;
-      q.size[0] = c.w;
-      q.size[1] = c.h;
-    }
-    _boxes[i] = particleBox(q);
+      q = LostSearch::draw(i, _lastEstimate, _judge.lostFrames(), view, _rng);
+    _space.predict(i, q, _fast, _rng, dtS, spread, framesElapsed);
+    _p.boxes[i] = _space.window(q);
   }
   // The cue searches around the last estimate; lost, the whole image, a few tiles a frame.
   const bool aroundLast = _cue.enabled() && !wasLost && _cue.trackingReady();
   const Box cueRegion = aroundLast ? _cue.region(_lastBox) : Box{};
-  return SearchRegion::of(_boxes, n, aroundLast ? &cueRegion : nullptr, _cue.enabled() && wasLost,
-                          _imageW, _imageH);
+  return SearchRegion::of(_p.boxes.span(), aroundLast ? &cueRegion : nullptr,
+                          _cue.enabled() && wasLost, _space.imageW(), _space.imageH());
 }
 
 bool Tracker::scorable(const Box& b, const Particle& q, bool searching) const {
-  if (b.empty() || b.w < 4.f || b.h < 4.f) return false;
-  if (!searching)
-    return b.x + b.w > 0.f && b.y + b.h > 0.f && b.x < static_cast<float>(_imageW) &&
-           b.y < static_cast<float>(_imageH);
-  // While lost, a window must see most of the target to re-detect it (LostSearch), and
-  // in 3D stand near the depth the target was last confirmed at.
-  return LostSearch::insideEnough(b, _imageW, _imageH) &&
-         !(_is3d && _config.lostDetection && _depthGuard.implausibleFind(q.p[2]));
+  // While lost, in 3D, a window must also stand near the depth the target was last
+  // confirmed at.
+  return _space.scorable(b, searching) && !(searching && _judge.implausibleFind(q.p[2]));
 }
 
 void Tracker::score(const PixelRect& roi, bool wasLost) {
   const int n = _filter.size();
-  for (int i = 0; i < n; ++i) _valid[i] = scorable(_boxes[i], _filter[i], wasLost) ? 1 : 0;
-  _strong.evaluateMany(_channels.tables(), _boxes, _valid, n, _scores,
-                       _scanOrder.sort(_boxes, n, roi.y0));
+  for (int i = 0; i < n; ++i) _p.valid[i] = scorable(_p.boxes[i], _filter[i], wasLost) ? 1 : 0;
+  _strong.evaluateMany(_channels.tables(), _p.boxes.span(), _p.valid.span(), _p.scores.span(),
+                       _scanOrder.sort(_p.boxes.span(), roi.y0));
 }
 
-Tracker::Estimate Tracker::estimate() {
-  // Weigh: w = exp(lambda (c - c_max)).
-  const int n = _filter.size();
-  float cMax = -2.f;
-  for (int i = 0; i < n; ++i)
-    if (_scores[i] > cMax) cMax = _scores[i];
-  float* w = _filter.weights();
-  if (_corrActive) {
-    float rMax = -2.f;
-    for (int i = 0; i < n; ++i)
-      if (_corrScores[i] > rMax) rMax = _corrScores[i];
-    for (int i = 0; i < n; ++i)
-      w[i] = fmath::fastExp(tuning::kWeightGain * (_scores[i] - cMax) +
-                            tuning::correlation::kResponseGain * (_corrScores[i] - rMax));
-  } else {
-    for (int i = 0; i < n; ++i) w[i] = fmath::fastExp(tuning::kWeightGain * (_scores[i] - cMax));
-  }
-
+TrackEstimate Tracker::estimate(const CueAnswer& cue) {
+  _filter.weigh(_p.scores.span(), cue.valid ? _p.cue.span() : Span<const float>{});
   // The weighted mean (the paper takes the heaviest particle: docs/experiments.md).
-  Estimate e;
+  TrackEstimate e;
   e.particle = _filter.weightedMean();
-  e.box = particleBox(e.particle);
+  e.box = _space.window(e.particle);
   const float c = e.box.empty() ? -1.f : _strong.evaluate(_channels.tables(), e.box);
-  if (!_is3d && _sizeFilter.enabled() && !e.box.empty()) e.box = _sizeFilter.filter(e.box);
-  float concentration = 0.f, wsum = 0.f;
-  for (int i = 0; i < n; ++i) {
-    concentration += w[i] * overlap(_boxes[i], e.box);
-    wsum += w[i];
-  }
-  e.concentration = wsum > 0.f ? concentration / wsum : 0.f;
+  e.box = _space.filterSize(e.box);
+  e.concentration = _filter.concentration(_p.boxes.span(), e.box);
   e.confidence = 0.5f * (c + 1.f);
   e.contrast = PeakContrast::kNoRing;
-  if (_config.lostDetection) {
-    Box ring[PeakContrast::kRing];
-    float ringScores[PeakContrast::kRing];
-    const int k = PeakContrast::ring(e.box, _imageW, _imageH, ring);
-    for (int i = 0; i < k; ++i) ringScores[i] = _strong.evaluate(_channels.tables(), ring[i]);
-    e.contrast = PeakContrast::of(c, ringScores, k);
-  }
+  if (_config.lostDetection)
+    e.contrast = PeakContrast::around(
+        e.box, _space.imageW(), _space.imageH(), c,
+        [this](const Box& b) { return _strong.evaluate(_channels.tables(), b); });
   return e;
 }
 
-bool Tracker::decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi) {
-  bool miss = false;  // whatever the confidence: not learnt, and a miss for the detector
-  if (_config.lostDetection) {
-    MissRule::Inputs in;
-    in.is3d = _is3d;
-    in.wasLost = wasLost;
-    in.onProbation = _lost.onProbation();
-    in.depthMm = e.particle.p[2];
-    in.contrast = e.contrast;
-    // 3D, tracked last frame (the filter searches only then): what its peak says.
-    const bool filterAnswered = _is3d && _corrActive && _cue.isFilter();
-    in.unlikeTarget = filterAnswered && _peakLevel.unlike(_cue.peak());
-    miss = MissRule::miss(in, _depthGuard);
-    e.miss = miss;
-    // The filter still answers like the target on the estimate (a miss stays a miss:
-    // the depth or the contrast said it is not the target).
-    // filterLeads2d: the box is the filter's; it sees the target when its peak is like
-    // the target's.
-    const bool filterSees = (filterAnswered && !miss && _peakLevel.like(_cue.peak()) &&
-                             overlap(_cue.peakBox(), e.box) >= tuning::lost::kOnEstimate) ||
-                            (_leadPeak >= 0.f && !miss && _peakLevel.like(_leadPeak));
-    _state = _lost.step(_state, miss ? 0.f : e.confidence, filterSees);
-    if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;
-  }
-  // Just found again (on probation): the estimate may be off the target's centre, or
-  // on a look-alike; learn only once the detector has confirmed it.
-  bool learned = false;
-  if (!e.box.empty() && !miss && !_lost.onProbation() &&
-      _gate.open(e.confidence, e.concentration, _state) && !covered(frame, e.particle)) {
-    // Only on frames fit to learn: the estimate is then on the target.
-    if (_is3d && _config.adaptCylinderSize && frame.hasDepth() &&
-        _sizer.follow(frame, _channels, _k, particleBox(e.particle), e.particle, _filter))
-      e.box = particleBox(e.particle);
+bool Tracker::decide(const Frame& frame, TrackEstimate& e, const CueAnswer& cue, bool wasLost,
+                     const PixelRect& roi, bool* miss) {
+  const TrackJudge::Verdict v = _judge.decide(
+      e, cue, _cue.isFilter(), wasLost, TrackJudge::Sight{frame.depthMm, targetBox(e.particle)});
+  *miss = v.miss;
+  if (v.action == TrackJudge::Action::Learn) {
+    if (_space.sizesCylinder() && frame.hasDepth() &&
+        _sizer.follow(frame, _channels, _space.camera(), _space.window(e.particle), e.particle,
+                      _filter))
+      e.box = _space.window(e.particle);
     _lastEstimate = e.particle;
-    _hold.learnt(frame.timeUs, e.particle, _is3d && _config.occlusionGate);
-    if (_corrActive && _cue.isFilter()) _peakLevel.learnt(_cue.peak());  // on the target
-    if (_leadPeak >= 0.f) _peakLevel.learnt(_leadPeak);
-    learn(clampToImage(e.box), roi);
-    learned = true;
-  } else if (_cue.isFilter() && !miss && !e.box.empty() && _state == TrackState::Tracking &&
-             !_lost.onProbation() && !covered(frame, e.particle)) {
-    // The filter follows the target on every frame it is tracked, not only on those fit
-    // for the classifier: its negatives are the context itself, and a filter left behind
-    // by a turning or deforming target loses it (docs/algorithm.md). Not while a nearer
-    // surface covers it (3D): it would learn the occluder and follow it.
-    _cue.follow(_rgb, clampToImage(e.box));
+    learn(_space.sane(e.box), roi);
+  } else if (v.action == TrackJudge::Action::FollowFilter) {
+    _cue.follow(_rgb, _space.sane(e.box));
   }
-  // The depth the target was last confirmed at: learnt, or found again (it may have
-  // moved in depth while hidden).
-  const bool confirmed =
-      learned || (_state == TrackState::Tracking && (wasLost || _lost.onProbation()));
-  if (confirmed) _depthGuard.confirm(e.particle.p[2]);
-  return learned;
-}
-
-bool Tracker::covered(const Frame& frame, const Particle& q) const {
-  if (!_is3d || !_config.occlusionGate || !frame.hasDepth()) return false;
-  return OcclusionHold::covered(frame.depthMm, targetBox(q), q);  // not the padded window
-}
-
-bool Tracker::depthMeasured(const Particle& q) const {
-  // The inner half of the target's own box: a cylinder's or a turned box's silhouette
-  // leaves background at the corners of its box. (A frame without depth has none in the
-  // tables.)
-  const Box b = targetBox(q);
-  const Box inner{b.x + 0.25f * b.w, b.y + 0.25f * b.h, 0.5f * b.w, 0.5f * b.h};
-  return _channels.validDepthFraction(clipBox(inner, _imageW, _imageH)) >= tuning::kMinDepthSupport;
-}
-
-void Tracker::hold(const Frame& frame, const Estimate& e) {
-  const bool behind = (_state == TrackState::Lost || e.miss) && covered(frame, _lastEstimate);
-  _hold.step(frame.timeUs, behind, &_lastEstimate);  // the search follows the held estimate
+  _judge.settle(v, frame.timeUs, e.particle, cue);
+  return v.action == TrackJudge::Action::Learn;
 }
 
 void Tracker::drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity) {
   const int moved =
-      _reseeder.place(c, from, dtS, withVelocity, searchView(), _channels, _rng, _filter);
+      _reseeder.place(c, from, dtS, withVelocity, _space.view(), _channels, _rng, _filter);
   // Mostly inside the image even while tracking, as the cue's peaks are (while searching,
   // scorable() asks that already).
-  const bool searching = _state == TrackState::Lost;
+  const bool searching = _judge.state() == TrackState::Lost;
+  _moved.resize(moved);
   for (int k = 0; k < moved; ++k) {
     const int i = _reseeder.index(k);
-    _boxes[i] = _reseeder.windows()[k];
-    _movedValid[k] = scorable(_boxes[i], _filter[i], searching) &&
-                             (searching || LostSearch::insideEnough(_boxes[i], _imageW, _imageH))
-                         ? 1
-                         : 0;
+    _p.boxes[i] = _moved.boxes[k] = _reseeder.windows()[k];
+    _moved.valid[k] = scorable(_p.boxes[i], _filter[i], searching) &&
+                              (searching || _space.insideEnough(_p.boxes[i]))
+                          ? 1
+                          : 0;
   }
-  _strong.evaluateMany(_channels.tables(), _reseeder.windows(), _movedValid, moved, _movedScores);
+  _strong.evaluateMany(_channels.tables(), _moved.boxes.span(), _moved.valid.span(),
+                       _moved.scores.span());
   for (int k = 0; k < moved; ++k)
-    _scores[_reseeder.index(k)] = _movedValid[k] != 0 ? _movedScores[k] : -1.f;
+    _p.scores[_reseeder.index(k)] = _moved.valid[k] != 0 ? _moved.scores[k] : -1.f;
 }
 
-bool Tracker::searchCue(const Box& around, bool scales) {
-  return _cue.search(_rgb, _channels.tables(), around, scales);
-}
-
-void Tracker::correlate(float dtS) {
-  if (!searchCue(_lastBox, !_is3d)) return;  // in 3D the depth sets the scale
-  _corrActive = true;
+CueAnswer Tracker::correlate(float dtS) {
+  // In 3D the depth sets the scale.
+  const CueAnswer a = _cue.search(_rgb, _channels.tables(), _lastBox, _space.cueSearchesScales());
+  if (!a.valid) return a;
   // Some particles onto the peak, when there is one (the target may have jumped where the
   // cloud did not reach), moving on as it jumped.
-  if (_cue.peak() >= _cue.minPeak()) drawAt(_cue.peakBox(), _prevEstimate, dtS, true);
-  const int n = _filter.size();
-  for (int i = 0; i < n; ++i) {
-    const Box& b = _boxes[i];
-    const float u = b.x + 0.5f * b.w, v = b.y + 0.5f * b.h;
-    _corrScores[i] = b.empty() ? CorrelationCue::kNoResponse : _cue.at(u, v);
-  }
+  if (a.strong()) drawAt(a.box, _prevEstimate, dtS, true);
+  _cue.atWindows(a, _p.boxes.span(), _p.cue.span());
+  return a;
 }
 
 void Tracker::scanLost(float dtS) {
   // While lost: the cue searched over the image, a few tiles a frame at the last learnt
   // size, the tiles' best peak (if strong enough) given particles to confirm.
   if (!_cue.scanReady()) return;
-  const Box last = particleBox(_lastEstimate);
+  const Box last = _space.window(_lastEstimate);
   if (last.empty()) return;
-  const Reseeder::Tiles tiles = Reseeder::tiles(last, _cue.scanStepSides(), _imageW, _imageH);
-  float best = _cue.scanMinPeak();
-  Box found{};
-  for (int j = 0; j < Reseeder::kTilesPerFrame && j < tiles.count(); ++j) {
-    if (_cue.scan(_rgb, _channels.tables(), _reseeder.nextTile(tiles)) && _cue.peak() >= best) {
-      best = _cue.peak();
-      found = _cue.peakBox();
-    }
-  }
+  const Reseeder::Tiles tiles =
+      Reseeder::tiles(last, _cue.scanStepSides(), _space.imageW(), _space.imageH());
+  const Box found = _cue.scanTiles(_rgb, _channels.tables(), tiles, _reseeder);
   if (!found.empty()) drawAt(found, _lastEstimate, dtS, false);
-}
-
-void Tracker::correctDepths(float dtS) {
-  // Pull each particle onto the measured surface (paper eq. 2).
-  const int n = _filter.size();
-  for (int i = 0; i < n; ++i) {
-    if (correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH))
-      _boxes[i] = particleBox(_filter[i]);
-  }
-  // A jump that landed on another surface (a twin further back, the background) is
-  // undone: only the sideways search is wanted, not a new depth.
-  for (int i = 1; _fast.jumping() && i < n; i += FastMotion::kEvery) {
-    if (!_fast.undoOffSurface(i, _filter[i])) continue;
-    keepInView(_filter[i], _k, _imageW, _imageH);
-    correctDepth(_filter[i], _channels, _k, dtS, _imageW, _imageH);
-    _boxes[i] = particleBox(_filter[i]);
-  }
 }
 
 TrackResult Tracker::followFilter(const Frame& frame, uint64_t t0) {
   // filterLeads2d, tracking: the background-aware filter places the box; the classifier
-  // judges it there (lost detection, as on the particles' estimate) and learns it when
-  // the gate opens; the particles wait, gathered on it, for a search if it is lost.
+  // judges it there (as the particles' estimate) and learns it when the gate opens; the
+  // particles wait, gathered on it, for a search if it is lost.
   const TrackResult lead = _lead.update(frame);
-  Estimate e;
-  e.box = clampToImage(_padding.toWindow(lead.box));
-  e.particle.p[0] = e.box.x + 0.5f * e.box.w;
-  e.particle.p[1] = e.box.y + 0.5f * e.box.h;
-  e.particle.size[0] = e.box.w;
-  e.particle.size[1] = e.box.h;
-  const PixelRect roi = clipBox(grow(e.box, NegativeSampler::kRange + 0.6f), _imageW, _imageH);
-  _channels.compute(frame, roi, false);
+  if (!_config.lostDetection) return timed(lead, t0);  // dcf: the filter alone
+  TrackEstimate e;
+  e.box = _space.sane(_padding.toWindow(lead.box));
+  e.particle = _space.initial(e.box, 0.f);
+  const PixelRect roi =
+      clipBox(grow(e.box, NegativeSampler::kRange + 0.6f), _space.imageW(), _space.imageH());
+  _channels.compute(frame, roi, _depthTables);
   const float c = _strong.evaluate(_channels.tables(), e.box);
   e.confidence = 0.5f * (c + 1.f);
   e.concentration = 1.f;  // no cloud to disagree
   e.contrast = PeakContrast::kNoRing;
-  if (_config.lostDetection) {
-    Box ring[PeakContrast::kRing];
-    float ringScores[PeakContrast::kRing];
-    const int k = PeakContrast::ring(e.box, _imageW, _imageH, ring);
-    for (int i = 0; i < k; ++i) ringScores[i] = _strong.evaluate(_channels.tables(), ring[i]);
-    e.contrast = PeakContrast::of(c, ringScores, k);
-  }
-  _corrActive = false;
-  _leadPeak = lead.confidence;  // decide(): the filter still sees the target?
-  const bool learned = decide(frame, e, false, roi);
-  _leadPeak = -1.f;
+  if (_config.lostDetection)
+    e.contrast = PeakContrast::around(
+        e.box, _space.imageW(), _space.imageH(), c,
+        [this](const Box& b) { return _strong.evaluate(_channels.tables(), b); });
+  CueAnswer cue;  // the filter's peak: a low frame is a loss only once it no longer sees it
+  cue.valid = true;
+  cue.byLead = true;
+  cue.peak = lead.confidence;
+  cue.box = e.box;
+  bool miss = false;
+  const bool learned = decide(frame, e, cue, false, roi, &miss);
   _lastBox = e.box;
   _prevEstimate = e.particle;
-  _sizeFilter.reset(e.box);
+  _space.resetSize(e.box);
   _filter.fill(e.particle);
   TrackResult r;
-  r.state = _state;
+  r.state = _judge.state();
   r.box = lead.box;
   r.confidence = e.confidence;
   r.learned = learned;
+  return timed(r, t0);
+}
+
+TrackResult Tracker::timed(TrackResult r, uint64_t t0) const {
   if (_clock != nullptr) r.timesUs.total = static_cast<uint32_t>(now() - t0);
   return r;
 }
 
 TrackResult Tracker::update(const Frame& frame) {
   TrackResult r;
-  r.state = _state;
-  if (_state == TrackState::Idle) return r;
+  r.state = _judge.state();
+  if (r.state == TrackState::Idle) return r;
   r.box = _padding.toTarget(_lastBox);
-  if (frame.rgb.empty() || frame.rgb.width != _imageW || frame.rgb.height != _imageH) return r;
+  if (frame.rgb.empty() || frame.rgb.width != _space.imageW() ||
+      frame.rgb.height != _space.imageH())
+    return r;
   const uint64_t t0 = now();
   const float dtS = frameDtS(_lastTimeUs, frame.timeUs);
-  const int framesElapsed = _fast.framesElapsed(_is3d, _lastTimeUs, frame.timeUs);
+  const int framesElapsed = _fast.framesElapsed(_space.is3d(), _lastTimeUs, frame.timeUs);
   _lastTimeUs = frame.timeUs;
-  const bool wasLost = _state == TrackState::Lost;
-  if (wasLost) ++_lostFrames;
+  const bool wasLost = _judge.beginFrame();
   _rgb = frame.rgb;
   if (_filterLeads && !wasLost) return followFilter(frame, t0);
 
   // Predict, and tabulate the region the particles (and negatives around them) can touch.
   const PixelRect roi = predict(dtS, framesElapsed, wasLost);
   const uint64_t t1 = now();
-  _channels.compute(frame, roi, _depthFeatures || _is3d);
+  _channels.compute(frame, roi, _depthTables);
   const uint64_t t2 = now();
-  if (_is3d && frame.hasDepth()) correctDepths(dtS);
+  _space.correctDepths(frame.hasDepth(), dtS, _channels, _fast, _filter, _p.boxes.span());
   const uint64_t t3 = now();
   score(roi, wasLost);
-  _corrActive = false;
-  if (_cue.enabled() && !wasLost) correlate(dtS);
+  const CueAnswer cue = _cue.enabled() && !wasLost ? correlate(dtS) : CueAnswer{};
   if (_cue.enabled() && wasLost) scanLost(dtS);
-  Estimate e = estimate();
+  TrackEstimate e = estimate(cue);
   const uint64_t t4 = now();
-  const bool learned = decide(frame, e, wasLost, roi);
-  hold(frame, e);
+  bool miss = false;
+  const bool learned = decide(frame, e, cue, wasLost, roi, &miss);
+  _judge.hold(frame.timeUs, miss, TrackJudge::Sight{frame.depthMm, targetBox(_lastEstimate)},
+              &_lastEstimate);
   _fast.endFrame(learned);
   const uint64_t t5 = now();
 
-  const int n = _filter.size();
-
   _filter.resample(_rng);
-  if (_state == TrackState::Lost || wasLost) {
-    // Searching (or just found): forget velocities, including the jumps the depth
-    // correction gave search particles, so the cloud spreads around where it is.
-    for (int i = 0; i < n; ++i) _filter[i].v.setZero();
-  }
+  if (_judge.searching(wasLost)) _filter.forgetVelocities();
   if (!e.box.empty()) {
     _lastBox = e.box;
     _prevEstimate = e.particle;
   }
   // Found again: the filter starts anew on the target where the classifier found it.
-  if (_filterLeads && wasLost && _state == TrackState::Tracking && !e.box.empty())
-    _lead.init(frame, _padding.toTarget(clampToImage(e.box)));
+  if (_filterLeads && wasLost && _judge.state() == TrackState::Tracking && !e.box.empty())
+    _lead.init(frame, _padding.toTarget(_space.sane(e.box)));
 
-  r.state = _state;
   r.box = _padding.toTarget(_lastBox);
   r.confidence = e.confidence;
   r.learned = learned;
-  const Particle& at = _hold.holding() ? _lastEstimate : e.particle;
-  if (_hold.holding()) {
-    r.state = TrackState::Tracking;
-    r.occluded = true;
-    r.box = targetBox(at);
-  }
-  if (_is3d) {
-    r.hasPosition3d = true;
-    for (int a = 0; a < 3; ++a) r.positionMm[a] = at.p[a];
-    r.depthPredicted = !depthMeasured(at);
-  }
+  const bool held = _judge.report(&r);
+  const Particle& at = held ? _lastEstimate : e.particle;
+  if (held) r.box = targetBox(at);
+  _space.report(&r, at, targetBox(at), _channels);
   if (_clock != nullptr) {
     r.timesUs.predict = static_cast<uint32_t>((t1 - t0) + (t3 - t2));
     r.timesUs.features = static_cast<uint32_t>(t2 - t1);

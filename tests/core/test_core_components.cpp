@@ -246,9 +246,9 @@ TEST_CASE("LostSearch: a 3D draw keeps the depth and lands on a ray inside the i
 }
 
 TEST_CASE("LostSearch: windows mostly outside the image are not scored", "[core][lostsearch]") {
-  CHECK(LostSearch::insideEnough(Box{10.f, 10.f, 50.f, 50.f}, 640, 480));
-  CHECK(LostSearch::insideEnough(Box{-5.f, 10.f, 50.f, 50.f}, 640, 480));         // 90% inside
-  CHECK_FALSE(LostSearch::insideEnough(Box{-25.f, 10.f, 50.f, 50.f}, 640, 480));  // half
+  CHECK(insideEnough(Box{10.f, 10.f, 50.f, 50.f}, 640, 480));
+  CHECK(insideEnough(Box{-5.f, 10.f, 50.f, 50.f}, 640, 480));         // 90% inside
+  CHECK_FALSE(insideEnough(Box{-25.f, 10.f, 50.f, 50.f}, 640, 480));  // half
 }
 
 TEST_CASE("DepthMedian: the median of the valid depth inside the box, to 10 mm",
@@ -271,7 +271,7 @@ TEST_CASE("ScanOrder: windows by 8 px row band, stable within a band", "[core][s
                         {0.f, 1.f, 8.f, 8.f},
                         {0.f, -30.f, 8.f, 8.f}};
   static ScanOrder s;
-  const uint16_t* order = s.sort(boxes, 5, 0);
+  const uint16_t* order = s.sort(Span<const Box>(boxes, 5), 0);
   CHECK(order[0] == 1);  // band 0: 1, 3, 4 (above the ROI counts as band 0), in index order
   CHECK(order[1] == 3);
   CHECK(order[2] == 4);
@@ -296,6 +296,20 @@ TEST_CASE("WindowPadding: a small target's window is padded about its centre, an
   CHECK(back.x == Approx(104.f));
   CHECK(back.w == Approx(6.f));
   CHECK(back.h == Approx(8.f));
+}
+
+TEST_CASE("PeakContrast::around scores the ring and takes the mean off the estimate's score",
+          "[core][peakcontrast]") {
+  int calls = 0;
+  const float c = PeakContrast::around(Box{100, 100, 40, 20}, 640, 480, 0.8f, [&](const Box& b) {
+    ++calls;
+    return b.x < 100.f ? 0.4f : 0.f;  // the window on the left scores 0.4
+  });
+  CHECK(calls == 4);
+  CHECK(c == Approx(0.8f - 0.1f));
+  // A window as large as the image has no ring: taken to stand out.
+  CHECK(PeakContrast::around(Box{0, 0, 640, 480}, 640, 480, 0.f, [](const Box&) { return 1.f; }) ==
+        PeakContrast::kNoRing);
 }
 
 TEST_CASE("PeakContrast: the ring is the four windows one side away inside the image",
@@ -323,12 +337,13 @@ TEST_CASE("PeakContrast: the ring is the four windows one side away inside the i
 TEST_CASE("PeakContrast: a peak stands out, a plateau does not", "[core][components]") {
   const float background[4] = {-0.8f, -0.6f, -0.9f, -0.7f};
   const float plateau[4] = {0.05f, -0.02f, 0.01f, 0.f};
-  CHECK(PeakContrast::of(0.6f, background, 4) == Approx(1.35f));
-  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, background, 4)));
-  CHECK(PeakContrast::flat(PeakContrast::of(0.02f, plateau, 4)));  // a plain wall
+  CHECK(PeakContrast::of(0.6f, Span<const float>(background, 4)) == Approx(1.35f));
+  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, Span<const float>(background, 4))));
+  CHECK(
+      PeakContrast::flat(PeakContrast::of(0.02f, Span<const float>(plateau, 4))));  // a plain wall
   // A look-alike beside the target on one side only still leaves it standing out.
   const float oneTwin[4] = {0.6f, -0.8f, -0.8f, -0.8f};
-  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, oneTwin, 4)));
+  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.6f, Span<const float>(oneTwin, 4))));
   // Nothing to compare with: taken to stand out.
-  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.f, background, 0)));
+  CHECK_FALSE(PeakContrast::flat(PeakContrast::of(0.f, Span<const float>(background, 0))));
 }

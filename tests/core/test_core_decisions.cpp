@@ -10,6 +10,7 @@
 #include "cuetrack/core/AppearanceCue.hpp"
 #include "cuetrack/core/ConfigError.hpp"
 #include "cuetrack/core/Gate.hpp"
+#include "cuetrack/core/InitTarget.hpp"
 #include "cuetrack/core/MissRule.hpp"
 #include "cuetrack/core/OcclusionHold.hpp"
 #include "cuetrack/core/PeakLevel.hpp"
@@ -169,22 +170,22 @@ TEST_CASE("SearchRegion: the windows grown by their mean size, the cue's region,
           "[core][searchregion]") {
   const Box windows[3] = {{50.f, 40.f, 10.f, 10.f}, {}, {60.f, 50.f, 10.f, 10.f}};
   // Mean size over all 3 (the empty one too): 20/3 px; grown kRoiMarginSides of it.
-  const PixelRect r = SearchRegion::of(windows, 3, nullptr, false, W, H);
+  const PixelRect r = SearchRegion::of(Span<const Box>(windows, 3), nullptr, false, W, H);
   const int grow = static_cast<int>(tuning::kRoiMarginSides * 20.f / 3.f);
   CHECK(r.x0 <= 50 - grow);
   CHECK(r.x0 >= 50 - grow - 1);
   CHECK(r.x1 >= 70 + grow);
   CHECK(r.y0 <= 40 - grow);
   const Box cue{0.f, 0.f, 20.f, 20.f};
-  const PixelRect withCue = SearchRegion::of(windows, 3, &cue, false, W, H);
+  const PixelRect withCue = SearchRegion::of(Span<const Box>(windows, 3), &cue, false, W, H);
   CHECK(withCue.x0 == 0);
   CHECK(withCue.y0 == 0);
   CHECK(withCue.x1 == r.x1);
-  const PixelRect lost = SearchRegion::of(windows, 3, nullptr, true, W, H);
+  const PixelRect lost = SearchRegion::of(Span<const Box>(windows, 3), nullptr, true, W, H);
   CHECK((lost.x0 == 0 && lost.y0 == 0 && lost.x1 == W && lost.y1 == H));
   // No window: the whole image rather than a degenerate region.
   const Box none1[1] = {Box{}};
-  const PixelRect none = SearchRegion::of(none1, 1, nullptr, false, W, H);
+  const PixelRect none = SearchRegion::of(Span<const Box>(none1, 1), nullptr, false, W, H);
   CHECK((none.x0 == 0 && none.y0 == 0 && none.x1 == W && none.y1 == H));
 }
 
@@ -281,27 +282,50 @@ TEST_CASE("AppearanceCue: the filter tracks, the template scans in 3D, none when
   CHECK(gCue.scanMinPeak() == tuning::dcf::kMinPeak);
   CHECK(gCue.scanStepSides() == CorrelationFilter::kPadding);
   CHECK(gCue.region(win).w == CorrelationFilter::region(win).w);
-  CHECK(gCue.search(f.rgb, gChannels.tables(), win, true));
-  CHECK(gCue.minPeak() == tuning::dcf::kMinPeak);
+  const CueAnswer a2d = gCue.search(f.rgb, gChannels.tables(), win, true);
+  CHECK(a2d.valid);
+  CHECK(a2d.byFilter());
+  CHECK(a2d.minPeak == tuning::dcf::kMinPeak);
+  CHECK(a2d.strong());  // on the window it was learnt from
+  CHECK(gCue.at(a2d, a2d.box.x + 0.5f * a2d.box.w, a2d.box.y + 0.5f * a2d.box.h) > 0.9f);
   // 3D: the filter tracks (one scale), the template scans.
   gCue.start(true, true, true, f.rgb, gChannels.tables(), win);
   CHECK(gCue.isFilter());
-  CHECK(gCue.search(f.rgb, gChannels.tables(), win, false));
-  CHECK(gCue.minPeak() == tuning::dcf::kMinPeak);
+  const CueAnswer tracked = gCue.search(f.rgb, gChannels.tables(), win, false);
+  CHECK(tracked.byFilter());
+  CHECK(tracked.minPeak == tuning::dcf::kMinPeak);
   CHECK(gCue.region(win).w == CorrelationFilter::region(win).w);
   CHECK(gCue.scanMinPeak() == tuning::correlation::kMinPeak);
   CHECK(gCue.scanStepSides() == 3.f);
-  CHECK(gCue.scan(f.rgb, gChannels.tables(), win));
-  CHECK(gCue.minPeak() == tuning::correlation::kMinPeak);
-  CHECK(gCue.peak() > 0.9f);  // the template on the window it was learnt from
+  const CueAnswer scanned = gCue.scan(f.rgb, gChannels.tables(), win);
+  CHECK(scanned.valid);
+  CHECK(scanned.byTemplate);
+  CHECK_FALSE(scanned.byFilter());  // the peak level reads the filter's answers only
+  CHECK(scanned.minPeak == tuning::correlation::kMinPeak);
+  CHECK(scanned.peak > 0.9f);  // the template on the window it was learnt from
   // The template alone (no filter wanted).
   gCue.start(true, false, false, f.rgb, gChannels.tables(), win);
   CHECK_FALSE(gCue.isFilter());
   CHECK(gCue.trackingReady());
-  CHECK(gCue.minPeak() == tuning::correlation::kMinPeak);
   CHECK(gCue.region(win).w == CorrelationCue::region(win).w);
-  CHECK(gCue.search(f.rgb, gChannels.tables(), win, false));
-  CHECK(gCue.peak() == gCue.peak());  // a number
+  const CueAnswer byTemplate = gCue.search(f.rgb, gChannels.tables(), win, false);
+  CHECK(byTemplate.valid);
+  CHECK(byTemplate.byTemplate);
+  CHECK(byTemplate.minPeak == tuning::correlation::kMinPeak);
+  CHECK(byTemplate.peak > 0.9f);
+}
+
+TEST_CASE("initTarget: the start box within the image, or why none", "[core][init]") {
+  const Frame f = scene(0);
+  Box t;
+  CHECK(initTarget(f.rgb, Box{-10.f, 100.f, 30.f, 40.f}, &t) == InitError::None);
+  CHECK(t.x == 0.f);
+  CHECK(t.w == 20.f);
+  CHECK(t.h == 20.f);  // cut at the bottom edge (H = 120)
+  CHECK(initTarget(RgbView{}, Box{0.f, 0.f, 10.f, 10.f}, &t) == InitError::NoColour);
+  CHECK(initTarget(f.rgb, Box{}, &t) == InitError::EmptyBox);
+  CHECK(initTarget(f.rgb, Box{W + 5.f, 0.f, 10.f, 10.f}, &t) == InitError::BoxOutsideImage);
+  CHECK(initTarget(f.rgb, Box{W - 2.f, 0.f, 10.f, 10.f}, &t) == InitError::BoxTooSmall);
 }
 
 TEST_CASE("ConfigError: every preset is valid", "[core][config]") {

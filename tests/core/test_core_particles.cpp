@@ -294,3 +294,28 @@ TEST_CASE("the weighted mean, of all particles or of a chosen subset", "[core][f
   const uint8_t zero[6] = {0, 0, 0, 0, 0, 1};
   CHECK(pf.weightedMean(zero).p[0] == 10.f);
 }
+
+TEST_CASE("weigh: the best score weighs 1, the cue's map shifts the weights; concentration",
+          "[core][particles]") {
+  static ParticleFilter f;  // large: static storage
+  f.setSize(3);
+  const float scores[3] = {0.5f, 0.2f, 0.5f};
+  f.weigh(scores, Span<const float>{});  // the cue did not answer
+  CHECK(f.weights()[0] == 1.f);          // exp(0)
+  CHECK(f.weights()[1] < f.weights()[0]);
+  CHECK(f.weights()[2] == f.weights()[0]);
+  const float cue[3] = {0.9f, 0.9f, 0.1f};  // the cue prefers particles 0 and 1
+  f.weigh(scores, cue);
+  CHECK(f.weights()[0] == 1.f);
+  CHECK(f.weights()[2] < f.weights()[0]);
+  // Concentration: the weighted mean overlap with the estimate.
+  const Box e{0.f, 0.f, 10.f, 10.f};
+  const Box on[3] = {e, e, e};
+  CHECK(f.concentration(on, e) == Approx(1.f));
+  const Box off[3] = {e, e, Box{50.f, 50.f, 10.f, 10.f}};
+  const float w2 = f.weights()[2];
+  CHECK(f.concentration(off, e) ==
+        Approx((f.weights()[0] + f.weights()[1]) / (f.weights()[0] + f.weights()[1] + w2)));
+  f.forgetVelocities();
+  CHECK(f[0].v.isZero());
+}

@@ -11,9 +11,25 @@
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/core/Image.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
+#include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
+
+// What one search or scan of the cue answered: a plain value, read by the tracker and
+// the verdict (TrackJudge) alike.
+struct CueAnswer {
+  bool valid = false;       // the map was computed (the window had something to read)
+  bool byTemplate = false;  // the gray template's map (else the correlation filter's)
+  // filterLeads2d: the background-aware filter placed the estimate; peak is its own.
+  bool byLead = false;
+  float peak = CorrelationCue::kNoResponse;  // the map's peak
+  Box box{};                                 // the peak's box
+  float minPeak = 0.f;  // the peak that is taken for the target (particles drawn at it)
+  bool strong() const { return peak >= minPeak; }
+  // The correlation filter answered (the one whose peak level says "like the target").
+  bool byFilter() const { return valid && !byTemplate; }
+};
 
 class AppearanceCue {
  public:
@@ -36,24 +52,26 @@ class AppearanceCue {
   }
   // Tracking: the cue around the last window; scales: the filter also searches one
   // scale step down and up (the template has one).
-  bool search(const RgbView& rgb, const FrameTables& t, const Box& around, bool scales) {
-    _lastTemplate = !_filter;
-    return _filter ? _dcf.search(rgb, around, scales) : _corr.search(t, around);
+  CueAnswer search(const RgbView& rgb, const FrameTables& t, const Box& around, bool scales) {
+    return _filter ? answer(false, _dcf.search(rgb, around, scales))
+                   : answer(true, _corr.search(t, around));
   }
   // Lost: one tile of the scan, with the template when there is one.
-  bool scan(const RgbView& rgb, const FrameTables& t, const Box& around) {
-    _lastTemplate = _template;
-    return _template ? _corr.search(t, around) : _dcf.search(rgb, around, false);
+  CueAnswer scan(const RgbView& rgb, const FrameTables& t, const Box& around) {
+    return _template ? answer(true, _corr.search(t, around))
+                     : answer(false, _dcf.search(rgb, around, false));
   }
-  // Of the last search() or scan():
-  float peak() const { return _lastTemplate ? _corr.peak() : _dcf.peak(); }
-  Box peakBox() const { return _lastTemplate ? _corr.peakBox() : _dcf.peakBox(); }
-  // The peak that is taken for the target (particles are drawn at it).
-  float minPeak() const {
-    return _lastTemplate ? tuning::correlation::kMinPeak : tuning::dcf::kMinPeak;
+  // Lost: the scan's next tiles (Reseeder::kTilesPerFrame of `tiles`, in `order`'s
+  // round); the box of their best peak at least scanMinPeak(), else an empty box.
+  Box scanTiles(const RgbView& rgb, const FrameTables& t, const Reseeder::Tiles& tiles,
+                Reseeder& order);
+  // The response at image point (u, v) of the map that gave answer `a` (valid, and the
+  // last search or scan).
+  float at(const CueAnswer& a, float u, float v) const {
+    return a.byTemplate ? _corr.at(u, v) : _dcf.at(u, v);
   }
-  // The response at image point (u, v) of the last search's map.
-  float at(float u, float v) const { return _lastTemplate ? _corr.at(u, v) : _dcf.at(u, v); }
+  // at() at the centre of each window into out (as many; an empty window: kNoResponse).
+  void atWindows(const CueAnswer& a, Span<const Box> windows, Span<float> out) const;
   // Whether the tracking cue, the scanning one, has a model.
   bool trackingReady() const { return _filter ? _dcf.ready() : _corr.ready(); }
   bool scanReady() const { return _template ? _corr.ready() : _dcf.ready(); }
@@ -75,10 +93,19 @@ class AppearanceCue {
   }
 
  private:
+  CueAnswer answer(bool byTemplate, bool valid) const {
+    CueAnswer a;
+    a.valid = valid;
+    a.byTemplate = byTemplate;
+    a.peak = byTemplate ? _corr.peak() : _dcf.peak();
+    a.box = byTemplate ? _corr.peakBox() : _dcf.peakBox();
+    a.minPeak = byTemplate ? tuning::correlation::kMinPeak : tuning::dcf::kMinPeak;
+    return a;
+  }
+
   bool _enabled = false;
-  bool _filter = false;        // this track's cue is _dcf
-  bool _template = false;      // _corr is this track's cue, or scans beside the filter
-  bool _lastTemplate = false;  // the last search or scan was _corr's
+  bool _filter = false;    // this track's cue is _dcf
+  bool _template = false;  // _corr is this track's cue, or scans beside the filter
   CorrelationCue _corr;
   CorrelationFilter _dcf;
 };

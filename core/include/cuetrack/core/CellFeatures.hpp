@@ -41,6 +41,12 @@ class CellFeatures {
   bool extract(const RgbView& rgb, const Box& win, float (*out)[kFftSize]);
 
  private:
+  // extract()'s steps after sampling: the samples' gradients; the cells' histograms, gray
+  // and colour into out; the histograms normalised by their blocks into out.
+  void gradients();
+  void cells(float (*out)[kFftSize]);
+  void normalise(float (*out)[kFftSize]);
+
   // Scratch: the window's samples (gray, two colour opponents), their gradients'
   // magnitude and orientation bin, the cells' raw orientation histograms, their gradient
   // energy and the inverse norm of each 2 x 2 block.

@@ -2,6 +2,9 @@
 // platform/ and apps/ (the camera model's 3D maths is in Camera.hpp).
 #pragma once
 
+#include "cuetrack/core/FastMath.hpp"
+#include "cuetrack/core/Tuning.hpp"
+
 namespace cuetrack {
 
 // Axis-aligned box in image pixels; (x, y) is the top-left corner.
@@ -26,6 +29,45 @@ inline float overlap(const Box& a, const Box& b) {
   if (x1 <= x0 || y1 <= y0) return 0.f;
   const float inter = (x1 - x0) * (y1 - y0);
   return inter / (a.area() + b.area() - inter);
+}
+
+// A rectangle of whole pixels, [x0, x1) x [y0, y1).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [px]
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+};
+
+// The pixel rectangle covering box b, clipped to w x h (may be empty).
+inline PixelRect clipBox(const Box& b, int w, int h) {
+  PixelRect r;
+  r.x0 = fmath::floorToInt(b.x);
+  r.y0 = fmath::floorToInt(b.y);
+  r.x1 = fmath::floorToInt(b.x + b.w) + 1;
+  r.y1 = fmath::floorToInt(b.y + b.h) + 1;
+  if (r.x0 < 0) r.x0 = 0;
+  if (r.y0 < 0) r.y0 = 0;
+  if (r.x1 > w) r.x1 = w;
+  if (r.y1 > h) r.y1 = h;
+  if (r.x1 < r.x0) r.x1 = r.x0;
+  if (r.y1 < r.y0) r.y1 = r.y0;
+  return r;
+}
+
+// The smallest rectangle holding a and b (either may be empty).
+inline PixelRect unite(const PixelRect& a, const PixelRect& b) {
+  if (a.width() <= 0 || a.height() <= 0) return b;
+  if (b.width() <= 0 || b.height() <= 0) return a;
+  return PixelRect{a.x0 < b.x0 ? a.x0 : b.x0, a.y0 < b.y0 ? a.y0 : b.y0, a.x1 > b.x1 ? a.x1 : b.x1,
+                   a.y1 > b.y1 ? a.y1 : b.y1};
+}
+
+// Whether window b lies mostly inside the imageW x imageH image (tuning::search::kInside
+// of its area): a window half outside scores on whatever its features read there, so
+// the lost search and the estimate's contrast ring take only such windows.
+inline bool insideEnough(const Box& b, int imageW, int imageH) {
+  const PixelRect c = clipBox(b, imageW, imageH);
+  return static_cast<float>(c.width() * c.height()) >= tuning::search::kInside * b.area();
 }
 
 // Pinhole intrinsics of the colour image (depth is registered to it).

@@ -8,25 +8,9 @@
 #include "cuetrack/core/Config.hpp"
 #include "cuetrack/core/Features.hpp"
 #include "cuetrack/core/Frame.hpp"
+#include "cuetrack/core/Geometry.hpp"  // PixelRect, clipBox
 
 namespace cuetrack {
-
-struct PixelRect {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) x [y0, y1) [px]
-  int width() const { return x1 - x0; }
-  int height() const { return y1 - y0; }
-};
-
-// The pixel rectangle covering box b, clipped to w x h (may be empty).
-PixelRect clipBox(const Box& b, int w, int h);
-
-// The smallest rectangle holding a and b (either may be empty).
-inline PixelRect unite(const PixelRect& a, const PixelRect& b) {
-  if (a.width() <= 0 || a.height() <= 0) return b;
-  if (b.width() <= 0 || b.height() <= 0) return a;
-  return PixelRect{a.x0 < b.x0 ? a.x0 : b.x0, a.y0 < b.y0 ? a.y0 : b.y0, a.x1 > b.x1 ? a.x1 : b.x1,
-                   a.y1 > b.y1 ? a.y1 : b.y1};
-}
 
 class IntegralChannels {
  public:

@@ -32,12 +32,6 @@ class LostSearch {
   // depth correction puts it on the surface there at the size the target would have.
   static Particle draw(int i, const Particle& last, int framesLost, const SearchView& view,
                        Rng& rng);
-  // While searching, a window must see most of the target to re-detect it (windows half
-  // outside the image score on whatever their features read there).
-  static bool insideEnough(const Box& b, int imageW, int imageH) {
-    const PixelRect c = clipBox(b, imageW, imageH);
-    return static_cast<float>(c.width() * c.height()) >= tuning::search::kInside * b.area();
-  }
 };
 
 }  // namespace cuetrack

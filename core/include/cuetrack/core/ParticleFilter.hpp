@@ -15,6 +15,7 @@
 #include "cuetrack/core/Geometry.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/Span.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
@@ -126,6 +127,16 @@ class ParticleFilter {
   const float* weights() const { return _w; }
   // Every particle a copy of q.
   void fill(const Particle& q);
+  // The weights from the classifier's scores: w = exp(lambda (c - c_max)), plus, when
+  // the appearance cue answered (cueScores, else null), its gain x (r - r_max).
+  // (scores, cueScores: one per particle; cueScores empty when the cue did not answer.)
+  void weigh(Span<const float> scores, Span<const float> cueScores);
+  // The weighted mean overlap of the particles' windows `boxes` with `estimate`.
+  float concentration(Span<const Box> boxes, const Box& estimate) const;
+  // Every particle's velocity zeroed (searching: the cloud spreads around where it is).
+  void forgetVelocities() {
+    for (int i = 0; i < _n; ++i) _p[i].v.setZero();
+  }
   // Low-variance (systematic) resampling by the current weights; one uniform draw.
   void resample(Rng& rng);
   int argmaxWeight() const;

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "cuetrack/core/Geometry.hpp"
-#include "cuetrack/core/LostSearch.hpp"
+#include "cuetrack/core/Span.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
@@ -30,15 +30,25 @@ class PeakContrast {
     int n = 0;
     if (b.empty()) return 0;
     for (const Box& r : all)
-      if (LostSearch::insideEnough(r, imageW, imageH)) out[n++] = r;
+      if (insideEnough(r, imageW, imageH)) out[n++] = r;
     return n;
   }
-  // scoreAt: the classifier's score c in [-1, 1] at the estimate; ringScores[n].
-  static float of(float scoreAt, const float* ringScores, int n) {
+  // scoreAt: the classifier's score c in [-1, 1] at the estimate; the ring's scores.
+  static float of(float scoreAt, Span<const float> ringScores) {
+    const int n = ringScores.size();
     if (n <= 0) return kNoRing;
     float sum = 0.f;
     for (int i = 0; i < n; ++i) sum += ringScores[i];
     return scoreAt - sum / static_cast<float>(n);
+  }
+  // The contrast at `estimate` (score c there), the ring's windows scored by score(Box).
+  template <class Score>
+  static float around(const Box& estimate, int imageW, int imageH, float scoreAt, Score score) {
+    Box boxes[kRing];
+    float scores[kRing];
+    const int k = ring(estimate, imageW, imageH, boxes);
+    for (int i = 0; i < k; ++i) scores[i] = score(boxes[i]);
+    return of(scoreAt, Span<const float>(scores, k));
   }
   static bool flat(float contrast) { return contrast < tuning::lost::kMinContrast; }
 };

@@ -12,6 +12,7 @@
 #include "cuetrack/core/LostSearch.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
 #include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/Span.hpp"
 #include "cuetrack/core/Tuning.hpp"
 
 namespace cuetrack {
@@ -26,12 +27,13 @@ class Reseeder {
   // One particle in kEvery of `filter` onto window c: `from` moved there (3D: at its depth
   // on the ray through c's centre, then onto the surface there), jittered by the 2D
   // position noise; withVelocity: moving on as it jumped over dtS. Returns how many moved
-  // (index(k), window(k)).
+  // (index(k), windows()).
   int place(const Box& c, const Particle& from, float dtS, bool withVelocity,
             const SearchView& view, const IntegralChannels& channels, Rng& rng,
             ParticleFilter& filter);
   int index(int k) const { return _index[k]; }
-  const Box* windows() const { return _windows; }
+  // The moved particles' windows, as many as the last place() moved.
+  Span<const Box> windows() const { return Span<const Box>(_windows, _moved); }
 
   // The lost scan: tiles `stepSides` window sides apart over the image, at the last
   // learnt window's size, visited kTilesPerFrame a frame, round and round.
@@ -48,6 +50,7 @@ class Reseeder {
  private:
   uint16_t _index[kMaxMoved] = {};  // the particles moved this frame
   Box _windows[kMaxMoved];
+  int _moved = 0;
   int _scanTile = 0;  // the lost scan's next tile
 };
 

@@ -8,6 +8,7 @@
 
 #include "cuetrack/core/Config.hpp"
 #include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/Span.hpp"
 
 namespace cuetrack {
 
@@ -15,8 +16,9 @@ class ScanOrder {
  public:
   static constexpr int kBandShift = 3;  // 8 px bands
   static constexpr int kBands = 64;     // the last band takes every lower window
-  // The indices 0..n-1 of `boxes`, by band of box.y - roiY0 (stable within a band).
-  const uint16_t* sort(const Box* boxes, int n, int roiY0);
+  // The indices 0..n-1 of `boxes` (n of them), by band of box.y - roiY0 (stable within
+  // a band).
+  const uint16_t* sort(Span<const Box> boxes, int roiY0);
 
  private:
   uint8_t _band[kMaxParticles];

@@ -6,14 +6,14 @@
 #pragma once
 
 #include "cuetrack/core/Geometry.hpp"
-#include "cuetrack/core/IntegralChannels.hpp"  // PixelRect
+#include "cuetrack/core/Span.hpp"
 
 namespace cuetrack {
 
 struct SearchRegion {
-  // windows[n]: the particles' windows (empty ones are skipped, yet count in the mean);
+  // windows: the particles' windows (empty ones are skipped, yet count in the mean);
   // cueRegion: the cue's region (nullptr: none); wholeImage: the lost scan.
-  static PixelRect of(const Box* windows, int n, const Box* cueRegion, bool wholeImage, int imageW,
+  static PixelRect of(Span<const Box> windows, const Box* cueRegion, bool wholeImage, int imageW,
                       int imageH);
 };
 

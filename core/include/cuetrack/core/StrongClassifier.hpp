@@ -15,6 +15,7 @@
 #include "cuetrack/core/CellKernels.hpp"
 #include "cuetrack/core/Config.hpp"
 #include "cuetrack/core/FeaturePool.hpp"
+#include "cuetrack/core/Span.hpp"
 #include "cuetrack/core/TrainingSet.hpp"
 #include "cuetrack/core/WeakClassifier.hpp"
 
@@ -35,15 +36,21 @@ class StrongClassifier {
     for (int i = 0; i < _m; ++i) sum += _weak[i].predict(cuetrack::evaluate(_feature[i], win, t));
     return _m > 0 ? sum / static_cast<float>(_m) : 0.f;
   }
-  // c(x) for n windows at once; windows with valid[i] == 0 get -1. Boosting often picks
+  // c(x) for every window of `windows` at once into out (as many); windows with
+  // valid[i] == 0 get -1. Boosting often picks
   // a feature more than once, so each distinct feature is evaluated once per window (its
   // table cell kept), then the weak classifiers' values are summed in round order, as
   // evaluate() does, and scaled by 1/M (within an ulp of evaluate()'s sum / M; the two
   // are only ever compared with margins far above that). `order` (optional) is the visiting order
   // of the windows: nearby windows in turn keep the table rows they read in cache.
   template <typename U, typename S>
-  void evaluateMany(const ChannelTables<U, S>& t, const Box* wins, const uint8_t* valid, int n,
-                    float* out, const uint16_t* order = nullptr) const {
+  void evaluateMany(const ChannelTables<U, S>& t, Span<const Box> windows,
+                    Span<const uint8_t> validity, Span<float> scores,
+                    const uint16_t* order = nullptr) const {
+    const Box* wins = windows.data();
+    const uint8_t* valid = validity.data();
+    float* out = scores.data();
+    const int n = windows.size();
     const ChannelTables<U, S> tl = t;  // a local copy: the compiler keeps it in registers
     for (int u = 0; u < _numDistinct; ++u) {
       const Feature f = _feature[_distinct[u]];

@@ -15,25 +15,23 @@
 #include "cuetrack/core/Clock.hpp"
 #include "cuetrack/core/ConfigError.hpp"
 #include "cuetrack/core/CylinderSizer.hpp"
-#include "cuetrack/core/DepthGuard.hpp"
 #include "cuetrack/core/DepthMedian.hpp"
 #include "cuetrack/core/FastMotion.hpp"
 #include "cuetrack/core/FeaturePool.hpp"
 #include "cuetrack/core/FilterTracker.hpp"
 #include "cuetrack/core/Frame.hpp"
-#include "cuetrack/core/Gate.hpp"
 #include "cuetrack/core/InitError.hpp"
 #include "cuetrack/core/IntegralChannels.hpp"
 #include "cuetrack/core/LostSearch.hpp"
 #include "cuetrack/core/NegativeSampler.hpp"
-#include "cuetrack/core/OcclusionHold.hpp"
 #include "cuetrack/core/ParticleFilter.hpp"
-#include "cuetrack/core/PeakLevel.hpp"
+#include "cuetrack/core/ParticleScratch.hpp"
 #include "cuetrack/core/Reseeder.hpp"
 #include "cuetrack/core/Rng.hpp"
 #include "cuetrack/core/ScanOrder.hpp"
-#include "cuetrack/core/SizeFilter.hpp"
+#include "cuetrack/core/Space.hpp"
 #include "cuetrack/core/StrongClassifier.hpp"
+#include "cuetrack/core/TrackJudge.hpp"
 #include "cuetrack/core/TrackResult.hpp"
 #include "cuetrack/core/TrackerConfig.hpp"
 #include "cuetrack/core/TrainingSet.hpp"
@@ -59,10 +57,10 @@ class Tracker {
   InitError init(const Frame& frame, const Box& box);
   TrackResult update(const Frame& frame);
   void reset();  // back to Idle; keeps the configuration
-  const TrackerConfig& config() const;
+  const TrackerConfig& config() const { return _config; }
 
   // Whether the running track uses the 3D state / depth features (after any fallback).
-  bool uses3d() const { return _is3d; }
+  bool uses3d() const { return _space.is3d(); }
   bool usesDepthFeatures() const { return _depthFeatures; }
   // Why a track that asked for 3D or depth runs 2D RGB (SpaceChoice); None: as asked.
   InitError fallbackReason() const { return _fallbackWhy; }
@@ -73,28 +71,13 @@ class Tracker {
   const ParticleFilter& particles() const { return _filter; }
 
  private:
-  // One update's estimate: the particle (3D: the cylinder), its window, and what the
-  // update gate and lost detection judge it by.
-  struct Estimate {
-    Particle particle{};
-    Box box{};
-    float confidence = 0.f;     // (c + 1) / 2 at the estimate
-    float concentration = 0.f;  // weighted mean overlap of the particles with it
-    float contrast = 0.f;       // PeakContrast: the score above the windows around it
-    bool miss = false;          // decide(): not the target, whatever the confidence
-  };
   // update()'s stages, in order.
   PixelRect predict(float dtS, int framesElapsed,
                     bool wasLost);                 // motion (+ search while lost); the ROI
-  void correctDepths(float dtS);                   // 3D: every particle onto the surface
   void score(const PixelRect& roi, bool wasLost);  // every particle's classifier score
-  bool covered(const Frame& frame, const Particle& q) const;  // occlusionGate
-  void hold(const Frame& frame, const Estimate& e);  // occlusionGate: lost behind something
-  // 3D: q's box has enough valid depth (tuning::kMinDepthSupport) for its depth to be measured.
-  bool depthMeasured(const Particle& q) const;
-  void correlate(float dtS);  // correlationCue: the template's map; some particles at its peak
-  void scanLost(float dtS);   // ... while lost: the template over the image, tile by tile
-  bool searchCue(const Box& around, bool scales);  // the appearance cue, on this frame
+  // correlationCue: the cue's map; some particles at its peak. Its answer (invalid when none).
+  CueAnswer correlate(float dtS);
+  void scanLost(float dtS);  // ... while lost: the template over the image, tile by tile
   // One particle in correlation::kEvery drawn at window c from `from` (Reseeder), and scored.
   void drawAt(const Box& c, const Particle& from, float dtS, bool withVelocity);
   // Whether particle q's window b is scored (else -1). While searching (lost) it must lie
@@ -102,58 +85,42 @@ class Tracker {
   // (DepthGuard::implausibleFind): the cloud would gather on a look-alike or a texture
   // there that it could never confirm.
   bool scorable(const Box& b, const Particle& q, bool searching) const;
-  Estimate estimate();  // weights and the estimate
+  TrackEstimate estimate(const CueAnswer& cue);  // weights (with the cue's map) and the estimate
   // filterLeads2d, tracking: the filter's box, judged and learnt by the classifier.
   TrackResult followFilter(const Frame& frame, uint64_t t0);
-  // Lost detection, the update gate and learning; true when learnt.
-  bool decide(const Frame& frame, Estimate& e, bool wasLost, const PixelRect& roi);
+  TrackResult timed(TrackResult r, uint64_t t0) const;  // with its total time, if clocked
+  // The verdict (TrackJudge) and its action; true when learnt, *miss: the frame missed.
+  bool decide(const Frame& frame, TrackEstimate& e, const CueAnswer& cue, bool wasLost,
+              const PixelRect& roi, bool* miss);
 
   uint64_t now() const { return _clock != nullptr ? _clock->nowUs() : 0; }
-  Box particleBox(const Particle& q) const;
   // The target's own box of particle q: its window less any small-target padding.
-  Box targetBox(const Particle& q) const { return _padding.toTarget(particleBox(q)); }
-  Box clampToImage(const Box& b) const;
+  Box targetBox(const Particle& q) const { return _padding.toTarget(_space.window(q)); }
   void addNegatives(const Box& around, int count, const PixelRect& roi);
   void addExample(const Box& win, bool positive);
   void learn(const Box& estimate, const PixelRect& roi);
   void train();  // GentleBoost on the training set
-  SearchView searchView() const { return SearchView{_is3d, _k, _imageW, _imageH}; }
 
   TrackerConfig _config{};
   uint64_t _seed = 0;
   const Clock* _clock = nullptr;
   Rng _rng{};
-  MotionModel2d _motion2d{};
-  MotionModel3d _motion3d{};
-  UpdateGate _gate{};
-  LostDetector _lost{};
-  TrackState _state = TrackState::Idle;
-  bool _is3d = false;
+  TrackJudge _judge;  // the state, the miss, what to learn, the hold
+  Space _space;       // 2D or 3D, chosen at init: windows, motion, the initial particle
   bool _depthFeatures = false;
+  bool _depthTables = false;  // the integral tables hold depth (depth features, or 3D)
   InitError _fallbackWhy = InitError::None;
   int _numWeak = 1;  // M for this track: numWeakClassifiers, or ...2d in the 2D fallback
-  int _imageW = 0, _imageH = 0;
-  CameraIntrinsics _k{};
   uint64_t _lastTimeUs = 0;
-  FastMotion _fast{};          // fastMotion: jumping particles, coasting over dropped frames
-  Box _lastBox{};              // the window tracked (padded for a small target)
-  WindowPadding _padding{};    // target -> window, for a target under kMinTrackedSidePx
-  SizeFilter2d _sizeFilter{};  // 2D: the estimate's size, smoothed
+  FastMotion _fast{};        // fastMotion: jumping particles, coasting over dropped frames
+  Box _lastBox{};            // the window tracked (padded for a small target)
+  WindowPadding _padding{};  // target -> window, for a target under kMinTrackedSidePx
   Particle _lastEstimate{};
-  Particle _prevEstimate{};          // the last frame's estimate (correlate() moves it)
-  AppearanceCue _cue;                // correlationCue: the filter (and template), or the template
-  PeakLevel _peakLevel;              // ... the filter's peak on the target (3D: found again?)
-  RgbView _rgb{};                    // update()'s colour image, for the filter
-  bool _corrActive = false;          // this frame's map was searched
-  float _corrScores[kMaxParticles];  // the cue's response at each particle
-  Reseeder _reseeder;                // particles at the cue's peak; the lost scan's tiles
-  uint8_t _movedValid[Reseeder::kMaxMoved];  // ... whether each is scored
-  float _movedScores[Reseeder::kMaxMoved];
-  // occlusionGate: lost while covered by a nearer surface, the target is reported where
-  // it is held; _lastEstimate follows, and the search with it.
-  OcclusionHold _hold;
-  int _lostFrames = 0;     // lost detection (beyond the paper): frames since declared lost
-  DepthGuard _depthGuard;  // ... 3D: the estimate's depth against the confirmed one
+  Particle _prevEstimate{};  // the last frame's estimate (correlate() moves it)
+  AppearanceCue _cue;        // correlationCue: the filter (and template), or the template
+  RgbView _rgb{};            // update()'s colour image, for the filter
+  Reseeder _reseeder;        // particles at the cue's peak; the lost scan's tiles
+  WindowScratch<Reseeder::kMaxMoved> _moved;  // ... their windows and scores
 
   IntegralChannels _channels;
   FeaturePool _pool;
@@ -161,18 +128,15 @@ class Tracker {
   ResponseCache _cache;
   StrongClassifier _strong;
   ParticleFilter _filter;
-  Box _boxes[kMaxParticles];
-  float _scores[kMaxParticles];
-  uint8_t _valid[kMaxParticles];
+  ParticleScratch _p;  // this update's windows, scores and the cue's map, per particle
   ScanOrder _scanOrder;
   float _featureErrors[kMaxPoolFeatures];
   NegativeSampler _negatives{};
   CylinderSizer _sizer{};    // adaptCylinderSize: D, H and the centre follow the depth silhouette
   DepthMedian _depthMedian;  // where a new 3D track stands
-  // filterLeads2d: a 2D track is the background-aware filter's alone.
+  // filterLeads2d: a 2D track's box is the background-aware filter's.
   FilterTracker _lead;
   bool _filterLeads = false;
-  float _leadPeak = -1.f;  // followFilter(): the filter's peak this frame, for decide()
 };
 // Everything together (Config.hpp's list of big buffers plus the small ones): 11,066,192 B
 // on x86-64 at 640x480 (docs/benchmarks.md), within the 16 MiB.

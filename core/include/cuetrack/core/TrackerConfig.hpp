@@ -53,9 +53,11 @@ struct TrackerConfig {
   // RGB tests use 32), and partial occlusions in RGB dip the confidence for longer.
   int numWeakClassifiers2d = 0;  // M in the 2D fallback, <= kMaxWeakClassifiers
   int lostAfter2d = 0;           // lost detection in the 2D fallback: frames of low confidence
-  // A track that runs 2D (asked for, or the fallback) is the background-aware correlation
-  // filter's alone (FilterTracker): it beats the particles and the classifier on real
-  // video (docs/algorithm.md). The `dcf` configuration, and `best` without depth.
+  // A track that runs 2D (asked for, or the fallback) follows the background-aware
+  // correlation filter (FilterTracker): its box is the filter's, which beats the
+  // particles on real video (docs/algorithm.md). With lostDetection the classifier
+  // judges it (lost, found again by the particle search); without, the filter is alone
+  // (the `dcf` configuration). `best` without depth.
   bool filterLeads2d = false;
 };
 
