@@ -7,17 +7,17 @@
 #include <cstdint>
 #include <string>
 
-#include "cuetrack/core/AppearanceCue.hpp"
-#include "cuetrack/core/ConfigError.hpp"
-#include "cuetrack/core/Gate.hpp"
-#include "cuetrack/core/InitTarget.hpp"
-#include "cuetrack/core/MissRule.hpp"
-#include "cuetrack/core/OcclusionHold.hpp"
-#include "cuetrack/core/PeakLevel.hpp"
-#include "cuetrack/core/Reseeder.hpp"
-#include "cuetrack/core/SearchRegion.hpp"
-#include "cuetrack/core/SpaceChoice.hpp"
-#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/core/config/ConfigError.hpp"
+#include "cuetrack/core/cues/AppearanceCue.hpp"
+#include "cuetrack/core/filter/Reseeder.hpp"
+#include "cuetrack/core/filter/SearchRegion.hpp"
+#include "cuetrack/core/guards/Gate.hpp"
+#include "cuetrack/core/guards/MissRule.hpp"
+#include "cuetrack/core/guards/OcclusionHold.hpp"
+#include "cuetrack/core/guards/PeakLevel.hpp"
+#include "cuetrack/core/tracker/InitTarget.hpp"
+#include "cuetrack/core/tracker/SpaceChoice.hpp"
+#include "cuetrack/core/tracker/Tracker.hpp"
 
 using namespace cuetrack;
 
