@@ -39,10 +39,10 @@
 namespace cuetrack {
 
 // The members are components (particle filter, observation model, feature pool,
-// training set, negative sampler, update gate and lost detector, and the beyond-the-paper
-// cylinder sizer, size filter, lost search, depth guard, fast motion, appearance cue,
-// miss rule, occlusion hold, search region, space choice and reseeder), each a fixed-size
-// class of its own with its own tests; Tracker wires them and keeps the track's state.
+// training set, negative sampler, and the beyond-the-paper state space, verdict,
+// cylinder sizer, fast motion, appearance cue and reseeder), each a fixed-size class of
+// its own with its own tests; Tracker wires them: the verdict (TrackJudge) keeps the
+// track's state, the state space (Space) everything that differs between 2D and 3D.
 // It is large (MiBs): give it static storage or allocate it once.
 class Tracker {
  public:
@@ -131,7 +131,7 @@ class Tracker {
   CylinderSizer _sizer{};    // adaptCylinderSize: D, H and the centre follow the depth silhouette
   DepthMedian _depthMedian;  // where a new 3D track stands
 };
-// Everything together (Config.hpp's list of big buffers plus the small ones): 11,066,192 B
+// Everything together (Config.hpp's list of big buffers plus the small ones): 11,068,272 B
 // on x86-64 at 640x480 (docs/benchmarks.md), within the 16 MiB.
 static_assert(sizeof(Tracker) <= kTrackerBudgetBytes, "the tracker must fit its 16 MiB budget");
 
