@@ -136,11 +136,9 @@ PixelRect Tracker::predict(float dtS, int framesElapsed, bool wasLost) {
     _space.predict(i, q, _fast, _rng, dtS, spread, framesElapsed);
     _p.boxes[i] = _space.window(q);
   }
-  // The cue searches around the last estimate; lost, the whole image, a few tiles a frame.
-  const bool aroundLast = _cue.enabled() && !wasLost && _cue.trackingReady();
-  const Box cueRegion = aroundLast ? _cue.region(_lastBox) : Box{};
-  return SearchRegion::of(_p.boxes.span(), aroundLast ? &cueRegion : nullptr,
-                          _cue.enabled() && wasLost, _space.imageW(), _space.imageH());
+  Box cueRegion;
+  return SearchRegion::of(_p.boxes.span(), _cue.searchRegion(wasLost, _lastBox, &cueRegion),
+                          _cue.scansImage(wasLost), _space.imageW(), _space.imageH());
 }
 
 bool Tracker::scorable(const Box& b, const Particle& q, bool searching) const {

@@ -81,6 +81,15 @@ class AppearanceCue {
   Box region(const Box& around) const {
     return _filter ? CorrelationFilter::region(around) : CorrelationCue::region(around);
   }
+  // What this frame's search reads: tracking with a model, the region around the last
+  // window `last` (written to *out and returned), else null; lost, the whole image, a
+  // few tiles a frame (scansImage).
+  const Box* searchRegion(bool wasLost, const Box& last, Box* out) const {
+    if (!_enabled || wasLost || !trackingReady()) return nullptr;
+    *out = region(last);
+    return out;
+  }
+  bool scansImage(bool wasLost) const { return _enabled && wasLost; }
   // The lost scan's tile spacing [window sides]: a search covers window positions within
   // kReach cells (1.5 sides) of its centre (the filter: kPadding / 2 sides), so tiles 3
   // sides apart cover the image.
