@@ -1,7 +1,7 @@
 #include <memory>
 
 #include "TrackerAdapters.hpp"
-#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/core/tracker/Tracker.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 
 namespace cuetrack::bench {

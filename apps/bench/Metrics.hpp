@@ -28,7 +28,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::bench {
 

@@ -4,7 +4,7 @@
 #include "TrackerAdapters.hpp"
 #include "cuetrack/cli/Command.hpp"
 #include "cuetrack/cli/Values.hpp"
-#include "cuetrack/core/TrackerConfig.hpp"
+#include "cuetrack/core/config/TrackerConfig.hpp"
 
 namespace cuetrack::bench {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "Results.hpp"
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::bench {
 

@@ -8,7 +8,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::bench {
 

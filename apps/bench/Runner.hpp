@@ -16,7 +16,7 @@
 
 #include "Outputs.hpp"
 #include "Results.hpp"
-#include "cuetrack/core/Frame.hpp"
+#include "cuetrack/core/base/Frame.hpp"
 #include "cuetrack/drivers/FrameSource.hpp"
 
 namespace cuetrack::bench {

@@ -10,8 +10,8 @@
 
 #include "cuetrack/cli/Command.hpp"
 #include "cuetrack/cli/Values.hpp"
-#include "cuetrack/core/Config.hpp"
-#include "cuetrack/core/Integral.hpp"
+#include "cuetrack/core/config/Config.hpp"
+#include "cuetrack/core/kernels/Integral.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
 
 namespace cli = cuetrack::cli;

@@ -16,7 +16,7 @@
 #include <string>
 
 #include "cuetrack/cli/Command.hpp"
-#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/core/tracker/Tracker.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
 

@@ -2,11 +2,11 @@
 // the table reads as gathers. Each lane is the scalar path's IEEE operations
 // (gridEdge, responseAt, angleIndex, magIndexSq). Only this file is built with
 // -mavx2; the dispatcher calls it after a CPUID check. The last n % 8 windows go to SSE2.
-#include "cuetrack/core/CellKernels.hpp"
+#include "cuetrack/core/model/CellKernels.hpp"
 #if defined(CUETRACK_CELLK_AVX2)
 #include <immintrin.h>
 
-#include "cuetrack/core/WeakClassifier.hpp"
+#include "cuetrack/core/model/WeakClassifier.hpp"
 
 namespace cuetrack::cellk::avx2 {
 

@@ -1,7 +1,7 @@
 // Chooses the cell coder: on x86-64 AVX2 after a CPUID check, else SSE2 (baseline);
 // NEON on aarch64, else scalar.
-#include "cuetrack/core/CellKernels.hpp"
-#include "cuetrack/core/Integral.hpp"
+#include "cuetrack/core/kernels/Integral.hpp"
+#include "cuetrack/core/model/CellKernels.hpp"
 
 namespace cuetrack::cellk {
 

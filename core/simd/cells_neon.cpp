@@ -1,11 +1,11 @@
 // aarch64 NEON cell coder (CellKernels.hpp): the SSE2 coder's lanes, each the scalar
 // path's IEEE operations (gridEdge, responseAt, angleIndex, magIndexSq). aarch64
 // NEON arithmetic and division are IEEE, so it is bit-exact; armhf uses the scalar coder.
-#include "cuetrack/core/CellKernels.hpp"
+#include "cuetrack/core/model/CellKernels.hpp"
 #if defined(CUETRACK_CELLK_NEON)
 #include <arm_neon.h>
 
-#include "cuetrack/core/WeakClassifier.hpp"
+#include "cuetrack/core/model/WeakClassifier.hpp"
 
 namespace cuetrack::cellk::neon {
 

@@ -1,6 +1,6 @@
 // Reference cell coder (CellKernels.hpp): WeakClassifier::cellOf of each window's response.
-#include "cuetrack/core/CellKernels.hpp"
-#include "cuetrack/core/WeakClassifier.hpp"
+#include "cuetrack/core/model/CellKernels.hpp"
+#include "cuetrack/core/model/WeakClassifier.hpp"
 
 namespace cuetrack::cellk::scalar {
 

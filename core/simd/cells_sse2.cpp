@@ -1,10 +1,10 @@
 // SSE2 cell coder (CellKernels.hpp): 4 windows per instruction, each lane the scalar
 // path's IEEE operations (gridEdge, responseAt, angleIndex, magIndexSq).
-#include "cuetrack/core/CellKernels.hpp"
+#include "cuetrack/core/model/CellKernels.hpp"
 #if defined(CUETRACK_CELLK_SSE2)
 #include <emmintrin.h>
 
-#include "cuetrack/core/WeakClassifier.hpp"
+#include "cuetrack/core/model/WeakClassifier.hpp"
 
 namespace cuetrack::cellk::sse2 {
 namespace {

@@ -1,5 +1,5 @@
 // Chooses the fit kernels statically: SSE2 is baseline on x86-64, NEON on aarch64.
-#include "cuetrack/core/FitKernels.hpp"
+#include "cuetrack/core/kernels/FitKernels.hpp"
 
 namespace cuetrack::fitk {
 

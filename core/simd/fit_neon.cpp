@@ -2,7 +2,7 @@
 // scalar reference's operations in its order (fastExp of FastMath.hpp written out per
 // lane). aarch64 NEON arithmetic is IEEE (subnormals kept), so it is bit-exact; ARMv7
 // NEON is not, and armhf uses the scalar kernels.
-#include "cuetrack/core/FitKernels.hpp"
+#include "cuetrack/core/kernels/FitKernels.hpp"
 #if defined(CUETRACK_FITK_NEON)
 #include <arm_neon.h>
 

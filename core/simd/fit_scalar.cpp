@@ -1,6 +1,6 @@
 // Scalar reference of the fit kernels (FitKernels.hpp): WeakClassifier::fit's loops.
-#include "cuetrack/core/FastMath.hpp"
-#include "cuetrack/core/FitKernels.hpp"
+#include "cuetrack/core/base/FastMath.hpp"
+#include "cuetrack/core/kernels/FitKernels.hpp"
 
 namespace cuetrack::fitk::scalar {
 

@@ -1,6 +1,6 @@
 // SSE2 fit kernels (FitKernels.hpp): 4 magnitude steps per instruction, the scalar
 // reference's operations in its order (fastExp of FastMath.hpp written out per lane).
-#include "cuetrack/core/FitKernels.hpp"
+#include "cuetrack/core/kernels/FitKernels.hpp"
 #if defined(CUETRACK_FITK_SSE2)
 #include <emmintrin.h>
 

@@ -4,7 +4,7 @@
 // the fused RGB pass (~1.3x over SSE2); for depth and gray8 SSE2 is as fast or
 // faster (the passes are bound by loads/stores, and the 8-lane prefix costs a
 // cross-lane shuffle), so those stay on SSE2.
-#include "cuetrack/core/Integral.hpp"
+#include "cuetrack/core/kernels/Integral.hpp"
 
 namespace cuetrack::integral {
 

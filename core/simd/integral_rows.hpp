@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "cuetrack/core/Integral.hpp"
+#include "cuetrack/core/kernels/Integral.hpp"
 
 namespace cuetrack::integral::rows {
 

@@ -4,8 +4,8 @@
 
 #include <cstdint>
 
-#include "cuetrack/core/Frame.hpp"
-#include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/base/Frame.hpp"
+#include "cuetrack/core/base/Rng.hpp"
 
 namespace cuetrack::test {
 

@@ -9,11 +9,11 @@
 
 #include "SharedData.hpp"
 #include "Skip.hpp"
-#include "cuetrack/core/BackgroundAwareFilter.hpp"
-#include "cuetrack/core/ColourNames.hpp"
-#include "cuetrack/core/FilterTracker.hpp"
-#include "cuetrack/core/ForegroundModel.hpp"
-#include "cuetrack/core/HogCnFeatures.hpp"
+#include "cuetrack/core/cues/BackgroundAwareFilter.hpp"
+#include "cuetrack/core/cues/ColourNames.hpp"
+#include "cuetrack/core/cues/ForegroundModel.hpp"
+#include "cuetrack/core/cues/HogCnFeatures.hpp"
+#include "cuetrack/core/tracker/FilterTracker.hpp"
 #include "cuetrack/platform/mavlink/Sha256.hpp"
 
 using namespace cuetrack;

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstring>
 
-#include "cuetrack/core/IntegralChannels.hpp"
-#include "cuetrack/core/StrongClassifier.hpp"
-#include "cuetrack/core/TrainingSet.hpp"
-#include "cuetrack/core/WeakClassifier.hpp"
+#include "cuetrack/core/model/IntegralChannels.hpp"
+#include "cuetrack/core/model/StrongClassifier.hpp"
+#include "cuetrack/core/model/TrainingSet.hpp"
+#include "cuetrack/core/model/WeakClassifier.hpp"
 
 using namespace cuetrack;
 

@@ -7,14 +7,14 @@
 #include <cmath>
 #include <vector>
 
-#include "cuetrack/core/DepthGuard.hpp"
-#include "cuetrack/core/DepthMedian.hpp"
-#include "cuetrack/core/FastMotion.hpp"
-#include "cuetrack/core/LostSearch.hpp"
-#include "cuetrack/core/Occlusion.hpp"
-#include "cuetrack/core/PeakContrast.hpp"
-#include "cuetrack/core/ScanOrder.hpp"
-#include "cuetrack/core/WindowPadding.hpp"
+#include "cuetrack/core/cues/DepthMedian.hpp"
+#include "cuetrack/core/filter/FastMotion.hpp"
+#include "cuetrack/core/filter/LostSearch.hpp"
+#include "cuetrack/core/guards/DepthGuard.hpp"
+#include "cuetrack/core/guards/Occlusion.hpp"
+#include "cuetrack/core/guards/PeakContrast.hpp"
+#include "cuetrack/core/model/ScanOrder.hpp"
+#include "cuetrack/core/tracker/WindowPadding.hpp"
 
 using namespace cuetrack;
 

@@ -3,9 +3,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "cuetrack/core/CorrelationCue.hpp"
-#include "cuetrack/core/IntegralChannels.hpp"
-#include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/base/Rng.hpp"
+#include "cuetrack/core/cues/CorrelationCue.hpp"
+#include "cuetrack/core/model/IntegralChannels.hpp"
 
 using namespace cuetrack;
 

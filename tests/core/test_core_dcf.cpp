@@ -3,9 +3,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "cuetrack/core/CorrelationFilter.hpp"
-#include "cuetrack/core/Fft.hpp"
-#include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/base/Rng.hpp"
+#include "cuetrack/core/cues/CorrelationFilter.hpp"
+#include "cuetrack/core/kernels/Fft.hpp"
 
 using namespace cuetrack;
 

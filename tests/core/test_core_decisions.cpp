@@ -7,17 +7,17 @@
 #include <cstdint>
 #include <string>
 
-#include "cuetrack/core/AppearanceCue.hpp"
-#include "cuetrack/core/ConfigError.hpp"
-#include "cuetrack/core/Gate.hpp"
-#include "cuetrack/core/InitTarget.hpp"
-#include "cuetrack/core/MissRule.hpp"
-#include "cuetrack/core/OcclusionHold.hpp"
-#include "cuetrack/core/PeakLevel.hpp"
-#include "cuetrack/core/Reseeder.hpp"
-#include "cuetrack/core/SearchRegion.hpp"
-#include "cuetrack/core/SpaceChoice.hpp"
-#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/core/config/ConfigError.hpp"
+#include "cuetrack/core/cues/AppearanceCue.hpp"
+#include "cuetrack/core/filter/Reseeder.hpp"
+#include "cuetrack/core/filter/SearchRegion.hpp"
+#include "cuetrack/core/guards/Gate.hpp"
+#include "cuetrack/core/guards/MissRule.hpp"
+#include "cuetrack/core/guards/OcclusionHold.hpp"
+#include "cuetrack/core/guards/PeakLevel.hpp"
+#include "cuetrack/core/tracker/InitTarget.hpp"
+#include "cuetrack/core/tracker/SpaceChoice.hpp"
+#include "cuetrack/core/tracker/Tracker.hpp"
 
 using namespace cuetrack;
 
@@ -274,6 +274,9 @@ TEST_CASE("AppearanceCue: the filter tracks, the template scans in 3D, none when
   const Box win{60.f, 40.f, 24.f, 24.f};
   gCue.start(false, true, false, f.rgb, gChannels.tables(), win);
   CHECK_FALSE(gCue.enabled());
+  Box region;
+  CHECK(gCue.searchRegion(false, win, &region) == nullptr);  // no cue: nothing to search
+  CHECK_FALSE(gCue.scansImage(true));
   // 2D: the filter alone; it tracks and scans.
   gCue.start(true, true, false, f.rgb, gChannels.tables(), win);
   CHECK(gCue.isFilter());
@@ -282,6 +285,11 @@ TEST_CASE("AppearanceCue: the filter tracks, the template scans in 3D, none when
   CHECK(gCue.scanMinPeak() == tuning::dcf::kMinPeak);
   CHECK(gCue.scanStepSides() == CorrelationFilter::kPadding);
   CHECK(gCue.region(win).w == CorrelationFilter::region(win).w);
+  REQUIRE(gCue.searchRegion(false, win, &region) == &region);  // tracking: around the window
+  CHECK(region.w == CorrelationFilter::region(win).w);
+  CHECK(gCue.searchRegion(true, win, &region) == nullptr);  // lost: the scan instead
+  CHECK(gCue.scansImage(true));
+  CHECK_FALSE(gCue.scansImage(false));
   const CueAnswer a2d = gCue.search(f.rgb, gChannels.tables(), win, true);
   CHECK(a2d.valid);
   CHECK(a2d.byFilter());

@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "cuetrack/core/Rng.hpp"
-#include "cuetrack/core/SizeFilter.hpp"
+#include "cuetrack/core/base/Rng.hpp"
+#include "cuetrack/core/cues/SizeFilter.hpp"
 
 using namespace cuetrack;
 

@@ -3,10 +3,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "cuetrack/core/Features.hpp"
-#include "cuetrack/core/Integral.hpp"
-#include "cuetrack/core/IntegralChannels.hpp"
-#include "cuetrack/core/TrainingSet.hpp"
+#include "cuetrack/core/kernels/Integral.hpp"
+#include "cuetrack/core/model/Features.hpp"
+#include "cuetrack/core/model/IntegralChannels.hpp"
+#include "cuetrack/core/model/TrainingSet.hpp"
 
 using namespace cuetrack;
 

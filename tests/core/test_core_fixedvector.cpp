@@ -2,9 +2,9 @@
 // pointer and a count as one value) and WindowScratch (per-window scratch sized together).
 #include <catch2/catch.hpp>
 
-#include "cuetrack/core/FixedVector.hpp"
-#include "cuetrack/core/ParticleScratch.hpp"
-#include "cuetrack/core/Span.hpp"
+#include "cuetrack/core/base/FixedVector.hpp"
+#include "cuetrack/core/base/Span.hpp"
+#include "cuetrack/core/filter/ParticleScratch.hpp"
 
 using namespace cuetrack;
 

@@ -1,7 +1,7 @@
 // The update gate and the lost detector (Gate.hpp).
 #include <catch2/catch.hpp>
 
-#include "cuetrack/core/Gate.hpp"
+#include "cuetrack/core/guards/Gate.hpp"
 
 using namespace cuetrack;
 

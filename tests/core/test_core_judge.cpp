@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include "cuetrack/core/TrackJudge.hpp"
-#include "cuetrack/core/Tuning.hpp"
+#include "cuetrack/core/config/Tuning.hpp"
+#include "cuetrack/core/tracker/TrackJudge.hpp"
 
 using namespace cuetrack;
 

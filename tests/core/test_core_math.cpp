@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "cuetrack/core/FastMath.hpp"
-#include "cuetrack/core/Rng.hpp"
+#include "cuetrack/core/base/FastMath.hpp"
+#include "cuetrack/core/base/Rng.hpp"
 
 using namespace cuetrack;
 

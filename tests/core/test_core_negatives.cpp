@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "cuetrack/core/NegativeSampler.hpp"
+#include "cuetrack/core/model/NegativeSampler.hpp"
 
 using namespace cuetrack;
 

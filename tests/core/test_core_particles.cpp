@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "cuetrack/core/ParticleFilter.hpp"
+#include "cuetrack/core/filter/ParticleFilter.hpp"
 
 using namespace cuetrack;
 

@@ -2,7 +2,7 @@
 // pool update (worst feature of the chosen kind goes; static ones never do).
 #include <catch2/catch.hpp>
 
-#include "cuetrack/core/FeaturePool.hpp"
+#include "cuetrack/core/model/FeaturePool.hpp"
 
 using namespace cuetrack;
 

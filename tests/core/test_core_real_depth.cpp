@@ -13,7 +13,7 @@
 #include "AllocCounter.hpp"
 #include "SharedData.hpp"
 #include "Skip.hpp"
-#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/core/tracker/Tracker.hpp"
 #include "cuetrack/drivers/OpenCvSources.hpp"
 
 using namespace cuetrack;

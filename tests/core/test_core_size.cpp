@@ -3,8 +3,8 @@
 // nothing, and a run that goes on to the window's edge is not taken as a size.
 #include <catch2/catch.hpp>
 
-#include "cuetrack/core/ParticleFilter.hpp"
-#include "cuetrack/core/SizeMeasure.hpp"
+#include "cuetrack/core/cues/SizeMeasure.hpp"
+#include "cuetrack/core/filter/ParticleFilter.hpp"
 
 using namespace cuetrack;
 

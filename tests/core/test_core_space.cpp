@@ -3,7 +3,7 @@
 // the 2D size filter, the depth correction) asked of it without frames or a tracker.
 #include <catch2/catch.hpp>
 
-#include "cuetrack/core/Space.hpp"
+#include "cuetrack/core/tracker/Space.hpp"
 
 using namespace cuetrack;
 

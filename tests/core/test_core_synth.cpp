@@ -5,8 +5,8 @@
 #include <cstdlib>
 
 #include "AllocCounter.hpp"
-#include "cuetrack/core/Tracker.hpp"
-#include "cuetrack/core/Tuning.hpp"
+#include "cuetrack/core/config/Tuning.hpp"
+#include "cuetrack/core/tracker/Tracker.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 
 using namespace cuetrack;

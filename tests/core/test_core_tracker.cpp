@@ -8,8 +8,8 @@
 
 #include "AllocCounter.hpp"
 #include "SceneFixture.hpp"
-#include "cuetrack/core/SizeMeasure.hpp"
-#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/core/cues/SizeMeasure.hpp"
+#include "cuetrack/core/tracker/Tracker.hpp"
 
 using namespace cuetrack;
 

@@ -8,7 +8,7 @@
 
 #include "SharedData.hpp"
 #include "Skip.hpp"
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 #include "cuetrack/drivers/FileBuffer.hpp"
 #include "cuetrack/drivers/RecordedParsers.hpp"
 

@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "AllocCounter.hpp"
-#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/core/tracker/Tracker.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/KinectSource.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"

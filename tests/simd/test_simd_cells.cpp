@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "Skip.hpp"
-#include "cuetrack/core/CellKernels.hpp"
-#include "cuetrack/core/Integral.hpp"
-#include "cuetrack/core/WeakClassifier.hpp"
+#include "cuetrack/core/kernels/Integral.hpp"
+#include "cuetrack/core/model/CellKernels.hpp"
+#include "cuetrack/core/model/WeakClassifier.hpp"
 
 namespace ck = cuetrack::cellk;
 using cuetrack::Box;

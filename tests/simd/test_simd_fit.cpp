@@ -7,8 +7,8 @@
 #include <random>
 #include <vector>
 
-#include "cuetrack/core/FastMath.hpp"
-#include "cuetrack/core/FitKernels.hpp"
+#include "cuetrack/core/base/FastMath.hpp"
+#include "cuetrack/core/kernels/FitKernels.hpp"
 
 namespace fk = cuetrack::fitk;
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "Skip.hpp"
-#include "cuetrack/core/Config.hpp"
-#include "cuetrack/core/Integral.hpp"
+#include "cuetrack/core/config/Config.hpp"
+#include "cuetrack/core/kernels/Integral.hpp"
 
 namespace ig = cuetrack::integral;
 using cuetrack::Rgb8;

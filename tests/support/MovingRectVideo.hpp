@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::test {
 

@@ -3,7 +3,7 @@
 // would follow the part inside: the wrong box.
 #pragma once
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::app {
 

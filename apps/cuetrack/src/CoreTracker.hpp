@@ -2,7 +2,7 @@
 #pragma once
 
 #include "TrackerPort.hpp"
-#include "cuetrack/core/Tracker.hpp"
+#include "cuetrack/core/tracker/Tracker.hpp"
 
 namespace cuetrack::app {
 

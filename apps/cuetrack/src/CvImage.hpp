@@ -4,7 +4,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "cuetrack/core/Frame.hpp"
+#include "cuetrack/core/base/Frame.hpp"
 
 namespace cuetrack::app {
 

@@ -8,8 +8,8 @@
 
 #include "Picker.hpp"
 #include "ViewTrack.hpp"
-#include "cuetrack/core/Frame.hpp"
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Frame.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::app {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::app {
 

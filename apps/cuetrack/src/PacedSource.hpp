@@ -5,7 +5,7 @@
 #pragma once
 
 #include "ForwardingSource.hpp"
-#include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/base/Clock.hpp"
 #include "cuetrack/platform/Sleeper.hpp"
 
 namespace cuetrack::app {

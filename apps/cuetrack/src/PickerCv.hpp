@@ -7,7 +7,7 @@
 #include <opencv2/highgui.hpp>
 
 #include "Picker.hpp"
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::app {
 

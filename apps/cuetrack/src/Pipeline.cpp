@@ -5,7 +5,7 @@
 #include "BoxFit.hpp"
 #include "StartBox.hpp"
 #include "TargetCheck.hpp"
-#include "cuetrack/core/FastMath.hpp"
+#include "cuetrack/core/base/FastMath.hpp"
 #include "cuetrack/platform/TrackText.hpp"
 
 namespace cuetrack::app {

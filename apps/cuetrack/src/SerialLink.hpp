@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "CommandHandler.hpp"
-#include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/base/Clock.hpp"
 #include "cuetrack/platform/ByteStream.hpp"
 #include "cuetrack/platform/QueuedPort.hpp"
 #include "cuetrack/platform/Reporter.hpp"

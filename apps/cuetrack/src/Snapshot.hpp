@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-#include "cuetrack/core/Frame.hpp"
+#include "cuetrack/core/base/Frame.hpp"
 
 namespace cuetrack::app {
 

@@ -5,8 +5,8 @@
 // else kPointDefaultWidthFraction of the image.
 #pragma once
 
-#include "cuetrack/core/Frame.hpp"
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Frame.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 #include "cuetrack/platform/TrackLink.hpp"
 
 namespace cuetrack::app {

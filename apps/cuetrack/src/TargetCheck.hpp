@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "cuetrack/core/Frame.hpp"
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Frame.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::app {
 

@@ -5,10 +5,10 @@
 
 #include <cstdint>
 
-#include "cuetrack/core/Clock.hpp"
-#include "cuetrack/core/Frame.hpp"
-#include "cuetrack/core/Geometry.hpp"
-#include "cuetrack/core/TrackResult.hpp"
+#include "cuetrack/core/base/Clock.hpp"
+#include "cuetrack/core/base/Frame.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
+#include "cuetrack/core/base/TrackResult.hpp"
 
 namespace cuetrack::app {
 

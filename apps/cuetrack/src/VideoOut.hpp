@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "ViewTrack.hpp"
-#include "cuetrack/core/Frame.hpp"
+#include "cuetrack/core/base/Frame.hpp"
 
 namespace cuetrack::app {
 

@@ -11,7 +11,7 @@
 #include <cstddef>
 
 #include "ForwardingSource.hpp"
-#include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/base/Clock.hpp"
 #include "cuetrack/platform/Reporter.hpp"
 #include "cuetrack/platform/Sleeper.hpp"
 

@@ -18,7 +18,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 #include "cuetrack/drivers/KinectDepth.hpp"
 
 namespace cuetrack {

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/config/Config.hpp"
 
 namespace cuetrack::rec {
 

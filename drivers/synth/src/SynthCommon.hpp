@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "cuetrack/core/Image.hpp"
+#include "cuetrack/core/base/Image.hpp"
 #include "cuetrack/drivers/SceneSpec.hpp"
 
 namespace cuetrack::synth {

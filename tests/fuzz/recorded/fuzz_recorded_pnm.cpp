@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/config/Config.hpp"
 #include "cuetrack/drivers/RecordedParsers.hpp"
 
 using namespace cuetrack;

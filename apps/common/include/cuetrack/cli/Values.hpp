@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::cli {
 

@@ -6,8 +6,8 @@
 // serial, MAVLink) are in the source's own pixels, mapped here and nowhere else.
 #pragma once
 
-#include "cuetrack/core/Config.hpp"
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
+#include "cuetrack/core/config/Config.hpp"
 
 namespace cuetrack {
 

@@ -6,10 +6,10 @@
 
 #include <cstdint>
 
-#include "cuetrack/core/Config.hpp"
-#include "cuetrack/core/Frame.hpp"
-#include "cuetrack/core/Geometry.hpp"
-#include "cuetrack/core/Image.hpp"
+#include "cuetrack/core/base/Frame.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
+#include "cuetrack/core/base/Image.hpp"
+#include "cuetrack/core/config/Config.hpp"
 #include "cuetrack/drivers/FrameScale.hpp"
 
 namespace cuetrack {

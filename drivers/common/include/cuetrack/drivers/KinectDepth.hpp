@@ -12,7 +12,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/config/Config.hpp"
 
 namespace cuetrack::kinect {
 

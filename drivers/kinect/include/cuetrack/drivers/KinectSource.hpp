@@ -27,7 +27,7 @@
 #include <cstdint>
 #include <thread>
 
-#include "cuetrack/core/Config.hpp"
+#include "cuetrack/core/config/Config.hpp"
 #include "cuetrack/drivers/FrameSource.hpp"
 #include "cuetrack/drivers/KinectPairer.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack {
 

@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "cuetrack/core/Config.hpp"
-#include "cuetrack/core/Image.hpp"
+#include "cuetrack/core/base/Image.hpp"
+#include "cuetrack/core/config/Config.hpp"
 
 namespace cuetrack {
 

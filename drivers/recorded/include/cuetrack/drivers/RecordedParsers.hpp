@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "cuetrack/core/Geometry.hpp"
-#include "cuetrack/core/Image.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
+#include "cuetrack/core/base/Image.hpp"
 
 namespace cuetrack::rec {
 

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <string>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 
 namespace cuetrack::rec {
 

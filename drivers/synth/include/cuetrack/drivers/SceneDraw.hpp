@@ -19,7 +19,7 @@
 
 #include <cstdint>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 #include "cuetrack/drivers/SceneSpec.hpp"
 
 namespace cuetrack {

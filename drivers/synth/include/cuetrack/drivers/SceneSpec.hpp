@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include "cuetrack/core/Geometry.hpp"
-#include "cuetrack/core/Image.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
+#include "cuetrack/core/base/Image.hpp"
 
 namespace cuetrack {
 

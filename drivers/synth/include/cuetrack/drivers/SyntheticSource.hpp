@@ -24,9 +24,9 @@
 
 #include <cstdint>
 
-#include "cuetrack/core/Config.hpp"
-#include "cuetrack/core/Geometry.hpp"
-#include "cuetrack/core/Image.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
+#include "cuetrack/core/base/Image.hpp"
+#include "cuetrack/core/config/Config.hpp"
 #include "cuetrack/drivers/FrameSource.hpp"
 #include "cuetrack/drivers/KinectDepth.hpp"
 #include "cuetrack/drivers/SceneCatalogue.hpp"

@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "cuetrack/core/Geometry.hpp"
+#include "cuetrack/core/base/Geometry.hpp"
 #include "cuetrack_proto.h"
 
 namespace cuetrack::platform {

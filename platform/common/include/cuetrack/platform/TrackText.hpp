@@ -5,7 +5,7 @@
 
 #include <cstddef>
 
-#include "cuetrack/core/TrackResult.hpp"
+#include "cuetrack/core/base/TrackResult.hpp"
 #include "cuetrack_proto.h"
 
 namespace cuetrack::platform {

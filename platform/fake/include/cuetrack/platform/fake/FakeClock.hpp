@@ -1,7 +1,7 @@
 // A clock the test sets by hand: time moves only when the test says so.
 #pragma once
 
-#include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/base/Clock.hpp"
 #include "cuetrack/platform/Sleeper.hpp"
 
 namespace cuetrack::platform {

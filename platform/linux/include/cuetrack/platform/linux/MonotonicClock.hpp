@@ -1,7 +1,7 @@
 // CLOCK_MONOTONIC in microseconds: never jumps with NTP or date changes.
 #pragma once
 
-#include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/base/Clock.hpp"
 #include "cuetrack/platform/Sleeper.hpp"
 
 namespace cuetrack::platform {

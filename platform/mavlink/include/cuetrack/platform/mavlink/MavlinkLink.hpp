@@ -19,7 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "cuetrack/core/Clock.hpp"
+#include "cuetrack/core/base/Clock.hpp"
 #include "cuetrack/platform/ByteStream.hpp"
 #include "cuetrack/platform/QueuedPort.hpp"
 #include "cuetrack/platform/Reporter.hpp"
