@@ -28,6 +28,7 @@
 #include "Process.hpp"
 #include "Skip.hpp"
 #include "TempDir.hpp"
+#include "TestPaths.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"

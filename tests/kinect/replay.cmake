@@ -59,6 +59,7 @@ set_tests_properties(test_kinect_make_recording_moving test_kinect_make_recordin
 add_executable(test_kinect_replay test_kinect_replay.cpp)
 target_link_libraries(test_kinect_replay PRIVATE cuetrack_test_main cuetrack_kinect cuetrack_recorded
                       cuetrack::core cuetrack_platform_linux cuetrack_alloc_counter cuetrack_warnings)
+cuetrack_use_test_pch(test_kinect_replay)
 
 if(TARGET cuetrack_recorded_cv)  # RGB-D folder reader for cuetrack-record --format rgbd
   target_link_libraries(test_kinect_replay PRIVATE cuetrack_recorded_cv)

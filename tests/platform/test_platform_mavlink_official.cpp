@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "Skip.hpp"
+#include "TestPaths.hpp"
 #include "cuetrack/platform/fake/FakeClock.hpp"
 #include "cuetrack/platform/fake/FakeSerial.hpp"
 #include "cuetrack/platform/fake/MemoryReporter.hpp"
