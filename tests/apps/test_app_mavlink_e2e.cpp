@@ -29,6 +29,7 @@
 #include "Skip.hpp"
 #include "TempDir.hpp"
 #include "TestPaths.hpp"
+#include "TestPrograms.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"

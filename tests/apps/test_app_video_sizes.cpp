@@ -15,6 +15,7 @@
 #include "Process.hpp"
 #include "Skip.hpp"
 #include "TempDir.hpp"
+#include "TestPrograms.hpp"
 
 using namespace cuetrack;
 using namespace cuetrack::test;

@@ -283,9 +283,10 @@ TEST_CASE("3D keeps the target when a same-textured twin crosses it", "[core][e2
   // between two places: in about one seed of twenty (seed 19 of 1-20 before the weak
   // classifiers' density floor, seed 5 after) the estimate falls between target and twin
   // and drifts off; best (lost detection) keeps every seed.
-  // Lean: seed 1, both presets, the whole crossing.
+  // Lean: seed 1, best alone (2.1's path is the golden hashes'), the whole crossing.
   const uint64_t seeds = lean() ? 1 : 10;
   for (Preset p : {Preset::Test2_1, Preset::Best}) {
+    if (lean() && p != Preset::Best) continue;
     int kept = 0;
     for (uint64_t seed = 1; seed <= seeds; ++seed) {
       const Stats s = runScene("twin-crossing", p, seed, 150);
