@@ -155,7 +155,7 @@ hear() {  # hear FILE WHAT REGEX [LISTEN-ARGS...]: a listener until a line of FI
   "${emu[@]}" "$listen" "$work/ttyB" "$@" >"$file" 2>/dev/null &
   listen_pid=$!
   wait_for "$what" grep -qE "$regex" "$file"
-  kill -INT "$listen_pid"
+  kill -INT "$listen_pid" 2>/dev/null || true  # it may have ended with the port
   wait "$listen_pid" || true
   listen_pid=""
 }
