@@ -351,6 +351,12 @@ page="$OUT/benchmarks.md"
   echo
   echo "Serial link budget (from docs/serial-protocol.md): a TRACK frame is 46 bytes on the wire,"
   echo "4.0 ms at 115200 baud (12 % of the line at 30 fps), 0.5 ms at 921600."
+  # The test command's times are measured by hand (`time scripts/test.sh`, a quiet machine),
+  # not by this script: the page's last section is kept as it is.
+  if [ -f "$DOC" ] && grep -q '^## Test command' "$DOC"; then
+    echo
+    sed -n '/^## Test command/,$p' "$DOC"
+  fi
 } > "$page"
 if [ "${DRY:-0}" = 1 ]; then cat "$page"; else cp "$page" "$DOC"; stamp "wrote $DOC ($(wc -l < "$DOC") lines)"; fi
 exit $status

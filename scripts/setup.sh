@@ -5,6 +5,7 @@ set -euo pipefail
 
 HOST_PKGS=(
   build-essential cmake ninja-build pkg-config git
+  ccache                             # every preset compiles through it (scripts/ccache.sh)
   libeigen3-dev catch2
   libcli11-dev                       # apps/common: every tool's command line (header-only)
   nlohmann-json3-dev                 # cuetrack-bench --json and the tests that read it (header-only)

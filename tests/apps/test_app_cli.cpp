@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "TestPaths.hpp"
 #include "cuetrack/cli/Command.hpp"
 #include "cuetrack/cli/Values.hpp"
 

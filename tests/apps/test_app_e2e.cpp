@@ -18,6 +18,7 @@
 #include "Process.hpp"
 #include "Skip.hpp"
 #include "TempDir.hpp"
+#include "TestPrograms.hpp"
 #include "cuetrack/drivers/FakenectReader.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"

@@ -28,6 +28,8 @@
 #include "Process.hpp"
 #include "Skip.hpp"
 #include "TempDir.hpp"
+#include "TestPaths.hpp"
+#include "TestPrograms.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/SerialPort.hpp"

@@ -16,6 +16,7 @@
 
 #include "Process.hpp"
 #include "TempDir.hpp"
+#include "TestPrograms.hpp"
 
 using namespace cuetrack::test;
 

@@ -22,6 +22,7 @@
 #include "Process.hpp"
 #include "Skip.hpp"
 #include "TempDir.hpp"
+#include "TestPrograms.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 
 using namespace cuetrack;

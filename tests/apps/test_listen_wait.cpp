@@ -9,6 +9,7 @@
 
 #include "Process.hpp"
 #include "Skip.hpp"
+#include "TestPrograms.hpp"
 
 using namespace cuetrack::test;
 

@@ -9,6 +9,7 @@
 
 #include "BenchJsonSample.hpp"
 #include "Json.hpp"
+#include "TestPaths.hpp"
 
 using namespace cuetrack::bench;
 using Json = nlohmann::ordered_json;  // keeps the file's key order

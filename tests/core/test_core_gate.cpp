@@ -1,6 +1,7 @@
 // The update gate and the lost detector (Gate.hpp).
 #include <catch2/catch.hpp>
 
+#include "cuetrack/core/config/Tuning.hpp"
 #include "cuetrack/core/guards/Gate.hpp"
 
 using namespace cuetrack;
@@ -95,4 +96,35 @@ TEST_CASE(
   TrackState s = TrackState::Tracking;
   for (int i = 0; i < 30; ++i) s = d.step(s, 0.6f);
   CHECK(d.foundThreshold() == Approx(d.foundAbove));
+}
+
+TEST_CASE("probation lasts exactly the tuned number of frames after the target is found",
+          "[core][gate]") {
+  // Counted frame by frame, not with the detector's own member: a probation one frame
+  // shorter or longer than tuning::lost::kProbationFrames fails here.
+  LostDetector d;
+  d.reset();
+  TrackState s = TrackState::Tracking;
+  for (int i = 0; i < d.lostAfter; ++i) s = d.step(s, 0.2f);
+  REQUIRE(s == TrackState::Lost);
+  for (int i = 0; i < d.foundAfter; ++i) s = d.step(s, 0.7f);
+  REQUIRE(s == TrackState::Tracking);
+  int probationFrames = 0;
+  while (d.onProbation() && probationFrames < 100) {
+    s = d.step(s, 0.7f);
+    ++probationFrames;
+  }
+  CHECK(probationFrames == tuning::lost::kProbationFrames);
+
+  // The last of those frames is still judged on probation: a middling one (between
+  // lostBelow and foundAbove) there loses the target again.
+  d.reset();
+  s = TrackState::Tracking;
+  for (int i = 0; i < d.lostAfter; ++i) s = d.step(s, 0.2f);
+  for (int i = 0; i < d.foundAfter; ++i) s = d.step(s, 0.7f);
+  REQUIRE(s == TrackState::Tracking);
+  for (int i = 0; i < tuning::lost::kProbationFrames - 1; ++i) s = d.step(s, 0.7f);
+  REQUIRE(d.onProbation());
+  s = d.step(s, 0.5f);
+  CHECK(s == TrackState::Lost);
 }

@@ -119,13 +119,23 @@ echo "service command: ${args[*]}"
 # Without a Kinect the service must keep the line alive: HEARTBEATs flagged no-camera
 # reach the other end, and a STOP from there ends it with exit 0. (With a Kinect plugged
 # in, tracks come instead, idle until a START.)
-socat_pid="" service_pid=""
+socat_pid="" service_pid="" listen_pid=""
 # Whatever happens, nothing started here outlives the test (ctest would wait for it).
-trap 'kill $service_pid $socat_pid 2>/dev/null; rm -rf "$work"' EXIT
+trap 'kill $listen_pid $service_pid $socat_pid 2>/dev/null; rm -rf "$work"' EXIT
+# Each wait polls for what it waits for against a deadline, generous for qemu on a loaded
+# machine: done as soon as it is there, a failure naming it when it never comes.
+readonly kDeadlineS=60
+wait_for() {  # wait_for WHAT TEST...: polls TEST until it holds or kDeadlineS pass
+  local what=$1 end=$(( $(date +%s) + kDeadlineS ))
+  shift
+  until "$@" 2>/dev/null; do
+    [ "$(date +%s)" -lt "$end" ] || fail "no $what within ${kDeadlineS} s"
+    sleep 0.05
+  done
+}
 socat "PTY,raw,echo=0,link=$work/ttyA" "PTY,raw,echo=0,link=$work/ttyB" >/dev/null 2>&1 &
 socat_pid=$!
-for _ in $(seq 100); do [ -e "$work/ttyB" ] && break; sleep 0.05; done  # socat's start-up
-[ -e "$work/ttyB" ] || fail "socat made no pseudo-terminal pair"
+wait_for "pseudo-terminal pair from socat" test -e "$work/ttyB"
 listen=$r/usr/bin/cuetrack-listen
 if [ "$freenect" != ON ]; then  # a build without the Kinect driver refuses to wait
   rc=0
@@ -137,9 +147,21 @@ if [ "$freenect" != ON ]; then  # a build without the Kinect driver refuses to w
 fi
 "${emu[@]}" "${args[@]}" >"$work/service.out" 2>"$work/service.err" &
 service_pid=$!
-# The listener runs until interrupted: hear 4 s, then send the STOP and hear the ACK.
-timeout -s INT 4 "${emu[@]}" "$listen" "$work/ttyB" >"$work/heard.txt" 2>/dev/null || true
-timeout -s INT 4 "${emu[@]}" "$listen" "$work/ttyB" --send stop >>"$work/heard.txt" 2>/dev/null || true
+# The listener runs until interrupted: hear the service's first message (a HEARTBEAT, or a
+# track with a Kinect), then send the STOP and hear its ACK.
+hear() {  # hear FILE WHAT REGEX [LISTEN-ARGS...]: a listener until a line of FILE matches
+  local file=$1 what=$2 regex=$3
+  shift 3
+  "${emu[@]}" "$listen" "$work/ttyB" "$@" >"$file" 2>/dev/null &
+  listen_pid=$!
+  wait_for "$what" grep -qE "$regex" "$file"
+  kill -INT "$listen_pid" 2>/dev/null || true  # it may have ended with the port
+  wait "$listen_pid" || true
+  listen_pid=""
+}
+hear "$work/heard-first.txt" "message from the service" '^(heartbeat|track) '
+hear "$work/heard-stop.txt" "ACK for the STOP" '^ack seq=[0-9]* stop' --send stop
+cat "$work/heard-first.txt" "$work/heard-stop.txt" >"$work/heard.txt"
 rc=0
 timeout 30 tail --pid="$service_pid" -f /dev/null || fail "cuetrack did not end after STOP"
 wait "$service_pid" || rc=$?

@@ -12,6 +12,7 @@
 
 #include "MavlinkPrefixes.hpp"
 #include "Skip.hpp"
+#include "TestPaths.hpp"
 #include "cuetrack/platform/fake/FakeClock.hpp"
 #include "cuetrack/platform/fake/FakeSerial.hpp"
 #include "cuetrack/platform/fake/MemoryReporter.hpp"

@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "TestPaths.hpp"
+
 namespace cuetrack::test {
 
 inline std::string sharedDataDir() {
