@@ -12,6 +12,7 @@
 #include "cuetrack/cli/Command.hpp"
 #include "cuetrack/cli/Values.hpp"
 #include "cuetrack/drivers/OpenSource.hpp"
+#include "cuetrack/drivers/SceneCatalogue.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 
@@ -66,7 +67,15 @@ int main(int argc, char** argv) {
   if (sources.empty() || (!bench && out.empty()))
     return cmd.fail("SOURCE and --out (or --bench) are required");
   const char* spec = sources[0].c_str();
+  if (!knownSceneSource(spec, err, sizeof err)) return cmd.fail(err);  // exit 2, every tool
   if (!gt.empty()) opt.gtPath = gt.c_str();
+  if (!bench) {
+    cli::OutputGuard inputs;
+    inputs.source("SOURCE", spec);
+    inputs.input("--gt", gt);
+    if (const int rc = checkSequenceOut("cuetrack-convert", format.c_str(), out.c_str(), inputs))
+      return rc;
+  }
   std::unique_ptr<FrameSource> src = openFrameSource(spec, opt, err, sizeof err);
   if (!src) {
     std::fprintf(stderr, "cuetrack-convert: %s\n", err);

@@ -4,8 +4,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "RecordOptions.hpp"
+#include "cuetrack/cli/OutputGuard.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/KinectSource.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
@@ -112,6 +114,15 @@ int main(int argc, char** argv) {
     return record::kExitUsage;
   }
 #endif
+  // The one output guard of every tool: a replayed recording (the fakenect library reads
+  // FAKENECT_PATH) is an input; --out may be neither it nor inside it.
+  cli::OutputGuard guard;
+  if (const char* replay = std::getenv("FAKENECT_PATH")) guard.input("FAKENECT_PATH", replay);
+  guard.outputFolder("--out", opt.outDir);
+  if (std::string clash; !guard.check(&clash)) {
+    std::fprintf(stderr, "cuetrack-record: %s\n", clash.c_str());
+    return record::kExitUsage;
+  }
   platform::installStopSignals();
   opt.kinect.stopRequested = &platform::stopRequested;
   if (!gKinect.open(opt.kinect)) {

@@ -82,6 +82,10 @@ int main(int argc, char** argv) {
     return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : cli::kExitFailed;
   }
   if (scene.empty() || out.empty()) return cmd.fail("--scene and --out are required (see --help)");
+  cli::OutputGuard inputs;  // rand:SEED:DATA reads DATA's stills
+  if (scene.rfind("rand:", 0) == 0) inputs.source("--scene", scene);
+  if (const int rc = checkSequenceOut("cuetrack-synth", format.c_str(), out.c_str(), inputs))
+    return rc;
   std::unique_ptr<FrameSource> src;
   if (scene.rfind("rand:", 0) == 0) {
     // Drawn scenes come through the readers' one factory (the stills need OpenCV).

@@ -86,11 +86,18 @@ cli::Convert three(float limit, float* out, const char* why) {
   };
 }
 
-// Every option of cuetrack, into *o (its texts into o->texts).
-void declare(cli::Command& cmd, AppOptions* o) {
+// A recording read from a path (a video or a folder), whose ground truth is a file.
+bool recordingSpec(const char* spec) {
+  if (spec == nullptr) return false;
+  for (const char* generated : {"kinect", "camera", "synth", "rand:", "pan:", "still:"})
+    if (std::strncmp(spec, generated, std::strlen(generated)) == 0) return false;
+  return true;
+}
+
+// The source, the target and the outputs.
+void declareInputsOutputs(cli::Command& cmd, AppOptions* o) {
   AppOptions::Texts& t = o->texts;
-  const std::string source = "source", target = "target", see = "see it", outputs = "outputs",
-                    mavlink = "MAVLink (with --protocol mavlink)", run = "run";
+  const std::string source = "source", target = "target", see = "see it", outputs = "outputs";
   cmd.option("--source", "kinect[:colour]|camera[:N]|synth[:SCENE]|PATH", "the frames (below)",
              [&t](const std::string& v) {
                // kinect:MODE: the tracker needs colour, so both streams or colour alone.
@@ -110,6 +117,11 @@ void declare(cli::Command& cmd, AppOptions* o) {
                o->hasBox = why.empty();
                return why;
              })
+      ->group(target);
+  cmd.text("--gt", "FILE",
+           "a recording's ground truth under another name (else NAME.gt.txt or NAME.txt beside "
+           "a video, a folder's own)",
+           &t.gt)
       ->group(target);
   cmd.app()
       .add_flag("--no-gt", "ignore ground truth: wait for --box or a serial START command")
@@ -142,6 +154,12 @@ void declare(cli::Command& cmd, AppOptions* o) {
       ->group(outputs);
   cmd.text("--out", "FILE", "CSV, one row per frame ('-' = stdout)", &t.out)->group(outputs);
   cmd.flag("--stdout", "one line per frame on stdout as well", &o->forceStdout)->group(outputs);
+}
+
+// MAVLink's options.
+void declareMavlink(cli::Command& cmd, AppOptions* o) {
+  AppOptions::Texts& t = o->texts;
+  const std::string mavlink = "MAVLink (with --protocol mavlink)";
   cmd.option("--mavlink-sysid", "N", "our MAVLink system id, 1..255 (default 1, the vehicle's)",
              mavlinkId(&o->mavSysId))
       ->group(mavlink);
@@ -179,6 +197,12 @@ void declare(cli::Command& cmd, AppOptions* o) {
                return "";
              })
       ->group(mavlink);
+}
+
+// How the run goes.
+void declareRun(cli::Command& cmd, AppOptions* o) {
+  AppOptions::Texts& t = o->texts;
+  const std::string run = "run";
   cmd.option("--frames", "N", "stop after N frames (a synthetic scene then lasts N frames)",
              [o](const std::string& v) {
                long n = 0;  // 0 would run nothing and say "done"
@@ -206,6 +230,13 @@ void declare(cli::Command& cmd, AppOptions* o) {
       ->group(run);
   cmd.flag("--quiet", "no status line on stderr; at the end only losses are reported", &o->quiet)
       ->group(run);
+}
+
+// Every option of cuetrack, into *o (its texts into o->texts), in --help's order.
+void declare(cli::Command& cmd, AppOptions* o) {
+  declareInputsOutputs(cmd, o);
+  declareMavlink(cmd, o);
+  declareRun(cmd, o);
 }
 
 }  // namespace
@@ -237,6 +268,7 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
   out->videoPath = text("--video", t.video);
   if (cmd.given("--config")) out->preset = t.preset.c_str();
   out->useGroundTruth = !cmd.given("--no-gt");
+  out->gtPath = text("--gt", t.gt);
   // The first --mavlink-* option on the command line.
   static const char* const kMavlinkOnly[] = {
       "--mavlink-sysid", "--mavlink-compid", "--mavlink-mount",        "--mavlink-offset",
@@ -254,6 +286,10 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
                                                      std::strncmp(out->source, "kinect:", 7) != 0)))
     return fail("--wait-camera needs --source kinect or kinect:colour");
   if (out->select && out->hasBox) return fail("--select and --box: one target at a time");
+  if (out->gtPath && !out->useGroundTruth) return fail("--gt and --no-gt: one or the other");
+  if (out->gtPath && !recordingSpec(out->source))
+    return fail(std::string("--gt: ") + (out->source ? out->source : "the default source") +
+                " has no ground-truth file (--gt is for a recording: a video or a folder)");
   if (out->snapshotPath && (out->show || out->select || out->videoPath))
     return fail("--snapshot saves a frame and exits: not with --show, --select or --video");
   // A setting that would do nothing is refused rather than ignored.

@@ -23,10 +23,11 @@ char gDefaultSpec[160] = "";  // and what, as --source would name it (empty: syn
 // so there it opens fakenect recordings only (and says so for other formats). One
 // allocation, at start.
 FrameSource* openThroughFactory(const char* spec, uint64_t seed, bool skipBadFrames, char* err,
-                                size_t errLen) {
+                                size_t errLen, const char* gtPath = nullptr) {
   SourceOptions options;
   options.seed = seed;
   options.skipBadFrames = skipBadFrames;
+  options.gtPath = gtPath;
   static std::unique_ptr<FrameSource> recorded;
   recorded = openFrameSource(spec, options, err, errLen);
   return recorded.get();
@@ -79,7 +80,7 @@ FrameSource* openKinect(KinectStreams streams, char* err, size_t errLen) {
 }  // namespace
 
 FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen,
-                        bool skipBadFrames) {
+                        bool skipBadFrames, const char* gtPath) {
   if (spec == nullptr) {
 #if defined(CUETRACK_HAVE_KINECT)
     char why[160] = "";
@@ -119,7 +120,7 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   if (std::strncmp(spec, "synth:", 6) == 0 && !std::strchr(spec + 6, ':')) {
     return openSynth(spec + 6, seed, frames, err, errLen);
   }
-  return openThroughFactory(spec, seed, skipBadFrames, err, errLen);
+  return openThroughFactory(spec, seed, skipBadFrames, err, errLen, gtPath);
 }
 
 void describeSourceChoice(const char* spec, char* out, size_t outLen) {
@@ -138,7 +139,11 @@ bool kinectSupported() {
 #endif
 }
 
-void describeGroundTruth(const char* spec, char* out, size_t outLen) {
+void describeGroundTruth(const char* spec, char* out, size_t outLen, const char* gtPath) {
+  if (gtPath) {
+    std::snprintf(out, outLen, "%s", gtPath);
+    return;
+  }
   if (!spec && gDefaultSpec[0] != '\0') spec = gDefaultSpec;  // the default chose a camera
   if (!spec || std::strncmp(spec, "kinect", 6) == 0 || std::strncmp(spec, "synth", 5) == 0 ||
       std::strncmp(spec, "pan:", 4) == 0 || std::strncmp(spec, "still:", 6) == 0 ||

@@ -357,6 +357,17 @@ bool makeScene(const char* name, SceneSpec* out, char* err, size_t errLen) {
   return false;
 }
 
+bool knownSceneSource(const char* spec, char* err, size_t errLen) {
+  if (spec == nullptr || std::strncmp(spec, "synth:", 6) != 0) return true;
+  char name[64];
+  std::snprintf(name, sizeof name, "%.*s", static_cast<int>(std::strcspn(spec + 6, ":")), spec + 6);
+  static SceneSpec scratch;  // large: not on the stack
+  char why[600];
+  if (makeScene(name, &scratch, why, sizeof why)) return true;
+  std::snprintf(err, errLen, "%s: %s", spec, why);
+  return false;
+}
+
 void listSceneNames(const char* separator, char* out, size_t len) {
   if (len == 0) return;
   out[0] = '\0';
