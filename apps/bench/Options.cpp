@@ -58,7 +58,9 @@ const char* kFooter =
     "  sequence was missing or broken (unreadable, no ground truth, a first box outside\n"
     "  the image, frames changing size) or an output (stdout, --json, --markdown, --csv,\n"
     "  --plots, --results, --overlay, --video) failed: each is reported and the rest\n"
-    "  goes on; 2 bad command line";
+    "  goes on; 2 bad command line (an unknown scene, an output that would overwrite\n"
+    "  an input or another output, too); 3 interrupted (SIGINT, SIGTERM, SIGHUP): the\n"
+    "  report, --json and --markdown hold the figures so far, marked partial";
 
 // What the declarations fill besides Options: the lists read in command-line order.
 struct Lists {

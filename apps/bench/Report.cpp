@@ -192,7 +192,9 @@ std::string distCoverage(const std::vector<EntryResult>& entries, bool markdown)
 
 std::string textReport(const std::vector<EntryResult>& entries) {
   std::string out;
-  if (entries.empty() || entries.front().sequences.empty()) return out;
+  if (entries.empty()) return out;
+  if (!entries.front().partial.empty()) out += "PARTIAL: " + entries.front().partial + "\n";
+  if (entries.front().sequences.empty()) return out;
   out +=
       "Overlap and hit rate [%] (the paper's Table 1 layout); cpu = mean ms per frame, "
       "tracking only\n";
@@ -250,6 +252,7 @@ std::string textReport(const std::vector<EntryResult>& entries) {
 std::string markdownReport(const std::vector<EntryResult>& entries, PaperReference ref) {
   std::string out;
   if (entries.empty() || entries.front().sequences.empty()) return out;
+  if (!entries.front().partial.empty()) out += "**Partial:** " + entries.front().partial + "\n\n";
   const auto& seqs = entries.front().sequences;
   char letter[8];
 

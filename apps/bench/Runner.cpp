@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 
 namespace cuetrack::bench {
 
@@ -112,8 +113,9 @@ struct EntryTally {
 
 // One run: tracks every frame after initAt, timing each update, and scores the frames
 // with ground truth. boxes gets the run's box on every frame; run 0 also fills the
-// result's scored frame indices.
-void trackRun(BenchTracker& tracker, const Sequence& seq, size_t initAt, int run,
+// result's scored frame indices. False when a stop signal ended it early: its figures are
+// then left out.
+bool trackRun(BenchTracker& tracker, const Sequence& seq, size_t initAt, int run,
               const RunOptions& options, Progress& progress, EntryTally* tally,
               std::vector<IndexedBox>* boxes, SequenceResult* result) {
   static const platform::MonotonicClock clock;
@@ -122,9 +124,10 @@ void trackRun(BenchTracker& tracker, const Sequence& seq, size_t initAt, int run
   boxes->clear();
   for (size_t i = 0; i < initAt; ++i) boxes->push_back({seq.frames[i].index, Box{}});
   boxes->push_back({first.index, first.groundTruth});
-  size_t evaluated = 0;
   uint64_t allocs = 0;
+  std::vector<double> overlaps;  // this run's, added to the tally when it completes
   for (size_t i = initAt + 1; i < seq.frames.size(); ++i) {
+    if (platform::stopRequested()) return false;
     const CachedFrame& f = seq.frames[i];
     double stageUs[5] = {0, 0, 0, 0, 0};
     const uint64_t a0 = options.allocationCount ? options.allocationCount() : 0;
@@ -143,17 +146,17 @@ void trackRun(BenchTracker& tracker, const Sequence& seq, size_t initAt, int run
       float posMm[3];
       if (f.hasTruthMm && !f.groundTruth.empty() && !box.empty() && tracker.lastPositionMm(posMm))
         acc.addPosition(f.truthCentreMm, posMm);
-      if (run == 0) {
-        result->frameIndex.push_back(f.index);
-        tally->overlapSum.push_back(0.0);
-      }
-      if (evaluated < tally->overlapSum.size()) tally->overlapSum[evaluated] += e.overlap;
-      ++evaluated;
+      if (run == 0) result->frameIndex.push_back(f.index);
+      overlaps.push_back(e.overlap);
     }
     progress.tick(static_cast<int>(i - initAt));
   }
   tally->runs.push_back(acc.figures());
   tally->allocsPerRun.push_back(static_cast<double>(allocs));
+  if (tally->overlapSum.empty()) tally->overlapSum.assign(overlaps.size(), 0.0);
+  for (size_t k = 0; k < overlaps.size() && k < tally->overlapSum.size(); ++k)
+    tally->overlapSum[k] += overlaps[k];
+  return true;
 }
 
 // --results: the run's boxes as a BoBoT result file; a failure is reported once, in
@@ -210,13 +213,22 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
     }
     progress.beginRun(spec.tracker + (spec.config == "default" ? "" : " " + spec.config), run,
                       spec.runs, tracked);
-    trackRun(*tracker, seq, initAt, run, options, progress, &tally, &boxes, &result);
+    if (!trackRun(*tracker, seq, initAt, run, options, progress, &tally, &boxes, &result)) {
+      progress.endRun();
+      break;  // a stop signal: the runs completed so far count
+    }
     progress.endRun();
     if (run == 0)
       for (const IndexedBox& b : boxes) result.firstRunBoxes.push_back(b.box);
     writeRunResult(spec, seq, first, run, boxes, options, &result);
   }
 
+  const size_t completed = tally.runs.size();
+  if (completed == 0) {
+    result.error = "interrupted before its first run ended";
+    result.frameIndex.clear();
+    return result;
+  }
   result.ran = true;
   result.figures = aggregateRuns(tally.runs, tally.frameTimesUs, tally.allocsPerRun);
   result.figures.hasStages = tracker->hasStages();
@@ -225,7 +237,7 @@ SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const Tracke
       result.figures.stageMs[s] = tally.stageSumUs[s] / tally.stageFrames / 1000.0;
   result.meanOverlap.resize(tally.overlapSum.size());
   for (size_t i = 0; i < tally.overlapSum.size(); ++i)
-    result.meanOverlap[i] = tally.overlapSum[i] / spec.runs;
+    result.meanOverlap[i] = tally.overlapSum[i] / static_cast<double>(completed);
   return result;
 }
 

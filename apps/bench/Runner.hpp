@@ -71,10 +71,11 @@ struct RunOptions {
   uint64_t (*allocationCount)() = nullptr;
 };
 
-// Runs one entry on one sequence; never throws; a tracker that cannot run, or a
-// sequence whose frames change size after the initialisation frame, gives ran = false
-// with the reason. A --results file that cannot be written is reported on stderr and
-// set in outputError.
+// Runs one entry on one sequence; never throws; a stop signal (platform::stopRequested)
+// ends it after the runs completed so far (none: ran = false, "interrupted ..."); a tracker that
+// cannot run, or a sequence whose frames change size after the initialisation frame, gives ran =
+// false with the reason. A --results file that cannot be written is reported on stderr and set in
+// outputError.
 SequenceResult runEntry(const EntrySpec& spec, const Sequence& seq, const TrackerFactory& factory,
                         const RunOptions& options, Progress& progress);
 

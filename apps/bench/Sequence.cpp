@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 
+#include "cuetrack/platform/linux/Signals.hpp"
+
 namespace cuetrack::bench {
 
 Frame CachedFrame::frame() const {
@@ -23,6 +25,10 @@ bool loadSequence(FrameSource& source, int maxFrames, size_t maxBytes, Sequence*
   static FrameSlot slot;
   for (;;) {
     if (maxFrames > 0 && static_cast<int>(seq->frames.size()) >= maxFrames) break;
+    if (platform::stopRequested()) {
+      *err = seq->name + ": interrupted while decoding";
+      return false;
+    }
     slot.hasTruthMm = false;  // only sources that know the 3D truth set it
     const ReadStatus st = source.next(slot);
     if (st == ReadStatus::End) break;

@@ -2,7 +2,8 @@
 // cuetrack's configurations and OpenCV's trackers on the very same decoded frames.
 // Exit code: 0 every sequence was sound and every output was written (a tracker that
 // cannot run on a sequence is a finding, reported and listed); 1 a sequence was missing
-// or broken, or an output failed; 2 bad command line.
+// or broken, or an output failed; 2 bad command line; 3 interrupted (the figures so far,
+// marked partial).
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -32,6 +33,8 @@ using namespace cuetrack;
 using namespace cuetrack::bench;
 
 namespace {
+
+constexpr int kExitInterrupted = 3;  // SIGINT/SIGTERM/SIGHUP: the figures so far, partial
 
 // "dir/Vid_C_juice.avi" -> "Vid_C_juice", "seq/" -> "seq": the name a reader would give.
 std::string nameOf(const std::string& spec) {
@@ -142,6 +145,13 @@ int runEntries(const Sequence& seq, const Options& options, const RunOptions& ru
   std::string err;
   for (size_t ei = 0; ei < options.entries.size(); ++ei) {
     const EntrySpec& spec = options.entries[ei];
+    if (platform::stopRequested()) {  // the rest of the table says so, row by row
+      SequenceResult r;
+      r.name = seq.name;
+      r.error = "interrupted";
+      (*results)[ei].sequences.push_back(std::move(r));
+      continue;
+    }
     const bool cacheable = !options.peerCacheDir.empty() && isPeerName(spec.tracker) &&
                            options.resultsDir.empty();  // result files need the run
     const std::string cachePath =
@@ -243,7 +253,7 @@ int writeFinalOutputs(const Options& options, const std::vector<EntryResult>& re
 }  // namespace
 
 int main(int argc, char** argv) {
-  cuetrack::platform::ignoreWriteSignals();
+  cuetrack::platform::installStopSignals();  // first: a stop at any moment ends as --help says
   Options options;
   bool help = false;
   std::string err;
@@ -280,10 +290,12 @@ int main(int argc, char** argv) {
   Progress progress(!options.quiet);
   int failures = 0;
 
-  for (size_t si = 0; si < options.sequences.size(); ++si) {
+  size_t done = 0;  // sequences every entry ran on
+  for (size_t si = 0; si < options.sequences.size() && !platform::stopRequested(); ++si) {
     const SequenceArg& arg = options.sequences[si];
     Sequence seq;
     if (!prepareSequence(arg, options, &seq, &err)) {
+      if (platform::stopRequested()) break;  // interrupted while decoding: not a failure
       std::fprintf(stderr, "cuetrack-bench: %s (skipped)\n", err.c_str());
       ++failures;
       for (EntryResult& r : results) {
@@ -301,9 +313,23 @@ int main(int argc, char** argv) {
                            static_cast<int>(options.sequences.size()), planned);
     failures += runEntries(seq, options, runOptions, progress, &results);
     failures += writeSequenceOutputs(seq, options, results, guard);
+    ++done;
+  }
+  const int stopSignal = platform::stopSignal();
+  if (stopSignal != 0) {
+    const std::string partial = "interrupted by signal " + std::to_string(stopSignal) + " after " +
+                                std::to_string(done) + " of " +
+                                std::to_string(options.sequences.size()) + " sequences";
+    for (EntryResult& r : results) r.partial = partial;
   }
 
   failures += writeFinalOutputs(options, results);
+  if (stopSignal != 0) {
+    std::fprintf(stderr, "cuetrack-bench: %s; the figures so far, marked partial%s\n",
+                 results.empty() ? "interrupted" : results.front().partial.c_str(),
+                 failures > 0 ? " (and failures: see above)" : "");
+    return kExitInterrupted;
+  }
   if (failures > 0)
     std::fprintf(stderr, "cuetrack-bench: %d failure(s); see the messages above\n", failures);
   return failures > 0 ? 1 : 0;

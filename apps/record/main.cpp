@@ -104,6 +104,7 @@ void progress(const record::Options& opt, int frames, double seconds, bool final
 }  // namespace
 
 int main(int argc, char** argv) {
+  platform::installStopSignals();  // first: a stop at any moment ends as --help says
   record::Options opt;
   if (const int rc = record::parse(argc, argv, &opt); rc >= 0) return rc;
   if (opt.list) return listDevices();
@@ -123,7 +124,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cuetrack-record: %s\n", clash.c_str());
     return record::kExitUsage;
   }
-  platform::installStopSignals();
   opt.kinect.stopRequested = &platform::stopRequested;
   if (!gKinect.open(opt.kinect)) {
     std::fprintf(stderr, "cuetrack-record: %s\n", gKinect.error());

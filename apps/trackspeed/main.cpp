@@ -19,6 +19,7 @@
 #include "cuetrack/core/Tracker.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
 
@@ -60,7 +61,7 @@ int timeUpdates(int frames, const FrameOf& frameOf, uint64_t* hash) {
     const unsigned char* b = static_cast<const unsigned char*>(p);
     for (std::size_t i = 0; i < bytes; ++i) h = (h ^ b[i]) * 1099511628211ULL;
   };
-  for (int n = 0; n < frames; ++n) {
+  for (int n = 0; n < frames && !platform::stopRequested(); ++n) {
     const int period = 2 * (kRendered - 1);
     const int k = (n + 1) % period;
     Frame f = frameOf(slots[k < kRendered ? k : period - k]);
@@ -85,8 +86,9 @@ int timeUpdates(int frames, const FrameOf& frameOf, uint64_t* hash) {
 
 const char* kExitCodes =
     "exit codes: 0 done, 1 a frame of the scene could not be rendered, the tracker\n"
-    "  refused its first box, or stdout could not be written, 2 bad command line (an\n"
-    "  unknown --scene, an option given twice too; a configuration the tracker refuses)";
+    "  refused its first box, stdout could not be written, or interrupted (SIGINT,\n"
+    "  SIGTERM, SIGHUP), 2 bad command line (an unknown --scene, an option given twice\n"
+    "  too; a configuration the tracker refuses)";
 
 constexpr int kExitRun = 1;
 constexpr int kExitUsage = 2;  // what the command line asked for cannot run
@@ -94,6 +96,7 @@ constexpr int kExitUsage = 2;  // what the command line asked for cannot run
 }  // namespace
 
 int main(int argc, char** argv) {
+  platform::installStopSignals();  // first: a stop at any moment ends as --help says
   std::string presetName = "2.1";
   std::string scene = "moving";
   int frames = 150, particles = -1, weak = -1;
@@ -159,6 +162,11 @@ int main(int argc, char** argv) {
   uint64_t h = 0;
   const int learned = timeUpdates(frames, frameOf, hash ? &h : nullptr);
   const int n = frames;
+  if (platform::stopRequested()) {
+    std::fprintf(stderr, "cuetrack-trackspeed: interrupted before the %d updates were timed\n",
+                 frames);
+    return kExitRun;
+  }
   if (hash) std::printf("hash %016llx\n", static_cast<unsigned long long>(h));
   if (icount) {
     std::printf("frames %d learned %d (run under qemu-icount; no clock read)\n", n, learned);

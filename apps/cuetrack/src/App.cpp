@@ -374,12 +374,14 @@ int exitCode(const RunEnd& end, bool outputFailed) {
 }  // namespace
 
 int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
+  // First: a stop at any moment (while the command line, the key or the source is read)
+  // ends the run with its summary and exit 0, as --help says.
+  platform::installStopSignals();
   platform::StderrReporter reporter("cuetrack");
   AppOptions opt;
   static uint8_t mavlinkKey[32];
   if (const int code = checkCommandLine(argc, argv, opt, mavlinkKey, reporter); code != kGoOn)
     return code;
-  platform::installStopSignals();
 
   static platform::MonotonicClock clock;
   if (!tracker.configure(opt.preset, opt.seed, &clock)) {

@@ -97,6 +97,9 @@ class Session {
   // The loop, until a stop, --tracks, the idle timeout or a failure; what main returns,
   // after the summary line.
   int run();
+  // Stopped while waiting for the port: the summary line (nothing received), exit 0.
+  bool interrupted() const { return platform::stopRequested(); }
+  int summaryOnly();
 
  private:
   bool resume(listen::Listener& listener);
@@ -121,11 +124,14 @@ class Session {
 };
 
 bool Session::openPort() {
+  const uint64_t startUs = _clock.nowUs();
   const bool waited = waitForPort(_opt.portPath, _opt.waitPortS, _problems);
+  if (platform::stopRequested()) return false;  // the caller ends with the summary
   if (!_port.open(_opt.portPath, static_cast<int>(_opt.baud))) {
     if (waited) {
-      std::snprintf(_err, sizeof _err, "%s (waited %ld s for it; --wait-port SECONDS)",
-                    _port.error(), _opt.waitPortS);
+      const double waitedS = static_cast<double>(_clock.nowUs() - startUs) / 1e6;
+      std::snprintf(_err, sizeof _err, "%s (waited %.0f s for it; --wait-port SECONDS)",
+                    _port.error(), waitedS);
       _problems.report(_err);
     } else {
       _problems.report(_port.error());
@@ -274,6 +280,14 @@ void Session::summary(const listen::Listener& listener) {
   _problems.report(_err);
 }
 
+int Session::summaryOnly() {
+  static platform::FdTrackSink none;
+  platform::LineReporter messages(platform::StdStream::Err);
+  listen::Listener listener(_port, none, messages, _problems);
+  summary(listener);
+  return 0;
+}
+
 int Session::run() {
   // With --csv, stdout may carry the CSV itself: other messages go to stderr.
   platform::LineReporter messages(_opt.csvPath ? platform::StdStream::Err
@@ -296,6 +310,7 @@ int Session::run() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  platform::installStopSignals();  // first: a stop at any moment ends with the summary, exit 0
   platform::StderrReporter problems("cuetrack-listen");
   char err[768];
   static listen::ListenOptions opt;  // static: 32 parsed commands
@@ -309,10 +324,9 @@ int main(int argc, char** argv) {
     case listen::ListenParse::Run:
       break;
   }
-  platform::installStopSignals();
   static platform::SerialPort port;
   static Session session(opt, port, problems);
-  if (!session.openPort()) return kExitPort;
+  if (!session.openPort()) return session.interrupted() ? session.summaryOnly() : kExitPort;
   if (!session.openTracks()) return kExitOutput;
   return session.run();
 }
