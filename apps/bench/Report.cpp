@@ -195,6 +195,9 @@ std::string textReport(const std::vector<EntryResult>& entries) {
   if (entries.empty()) return out;
   if (!entries.front().partial.empty()) out += "PARTIAL: " + entries.front().partial + "\n";
   if (entries.front().sequences.empty()) return out;
+  bool anyRan = false;
+  for (const EntryResult& e : entries) anyRan = anyRan || e.sequencesRan() > 0;
+  if (!anyRan) return out + notRunList(entries, "  ").substr(1);  // no table of dashes
   out +=
       "Overlap and hit rate [%] (the paper's Table 1 layout); cpu = mean ms per frame, "
       "tracking only\n";

@@ -78,7 +78,9 @@ size_t firstTruthFrame(const Sequence& seq) {
 // Why the sequence cannot be run from frame initAt, "" when it can: these are the
 // sequence's faults, not the tracker's.
 std::string sequenceFault(const Sequence& seq, size_t initAt) {
-  if (initAt == seq.frames.size()) return "no ground-truth box to initialise from";
+  if (initAt == seq.frames.size())
+    return "no ground-truth box to initialise from (a video's NAME.gt.txt or NAME.txt beside "
+           "it, a folder's own file, or --gt FILE before the sequence)";
   const CachedFrame& first = seq.frames[initAt];
   const Box& g = first.groundTruth;
   const float w = static_cast<float>(first.width), h = static_cast<float>(first.height);

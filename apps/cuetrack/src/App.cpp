@@ -44,6 +44,12 @@ struct Outputs {
   platform::TrackLink* link = nullptr;  // serial or MAVLink, if any
 };
 
+// The target comes from the user (--box, --select, --snapshot) or --no-gt drops the ground
+// truth: one beside the recording that does not fit is a warning, not a failed run.
+bool groundTruthOptional(const AppOptions& opt) {
+  return opt.hasBox || opt.select || opt.snapshotPath || !opt.useGroundTruth;
+}
+
 // The frame source; nullptr once the reason is reported. With --wait-camera the camera
 // may come later: the run starts without it (outputs open, the link served), and next()
 // looks for it every second.
@@ -53,16 +59,18 @@ FrameSource* openFrameSource(AppOptions& opt, const Clock& clock, platform::Slee
     static WaitingSource waiting(
         [](void* ctx, char* e, size_t n) {
           const AppOptions& o = *static_cast<const AppOptions*>(ctx);
-          return openSource(o.source, o.seed, o.frames, e, n, o.skipBadFrames, o.gtPath);
+          return openSource(o.source, o.seed, o.frames, e, n, o.skipBadFrames, o.gtPath,
+                            groundTruthOptional(o));
         },
         &opt, clock, sleeper, reporter, &platform::stopRequested);
     waiting.tryOpen();
     return &waiting;
   }
   char err[512] = "";
-  FrameSource* source =
-      openSource(opt.source, opt.seed, opt.frames, err, sizeof err, opt.skipBadFrames, opt.gtPath);
+  FrameSource* source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err,
+                                   opt.skipBadFrames, opt.gtPath, groundTruthOptional(opt));
   if (!source) reporter.report(err);
+  if (source && source->warning()[0] != '\0') reporter.report(source->warning());
   return source;
 }
 

@@ -38,9 +38,10 @@ const char* kFooter =
     "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM/SIGHUP, STOP command),\n"
     "  1 source failed (cannot open, a read failed, a damaged frame, no decodable frame\n"
     "  at all, or a frame's size differs from the frame the track began on), 2 bad\n"
-    "  command line (an option given twice too; no way to a target; --show or --select\n"
-    "  without a display, a --select cancelled; an output (--out, --video, --snapshot)\n"
-    "  that is the source, lies inside its folder, or is another output), 3 output failed\n"
+    "  command line (an option given twice too; an unknown scene; no way to a target;\n"
+    "  --show or --select without a display, a --select cancelled; an output (--out,\n"
+    "  --video, --snapshot) that is the source, its ground truth or --gt, lies inside its\n"
+    "  folder, or is another output, --force or not), 3 output failed\n"
     "  (cannot open, a write to --out/stdout/--video/--snapshot failed, or --video does not\n"
     "  read back whole; tracking went on), 4 the --box, or the source's ground-truth box,\n"
     "  refused by the tracker";
@@ -228,7 +229,10 @@ void declareRun(cli::Command& cmd, AppOptions* o) {
                return cli::seed(v, &o->seed).empty() ? "" : "expected a non-negative integer";
              })
       ->group(run);
-  cmd.flag("--quiet", "no status line on stderr; at the end only losses are reported", &o->quiet)
+  cmd.flag("--quiet",
+           "no status lines on stderr; at the end only losses (frames not tracked or skipped, "
+           "messages dropped)",
+           &o->quiet)
       ->group(run);
 }
 

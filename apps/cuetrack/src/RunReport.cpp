@@ -70,6 +70,14 @@ void printSummary(const AppOptions& opt, const char* program, const Pipeline& pi
   const char* name = linkName(opt);
   const StepResult r = end.result;
   if (opt.quiet) {
+    // Losses: frames the target was given but not tracked (lost or hidden), frames skipped,
+    // messages the link dropped.
+    const uint32_t untracked = summary.frames() - summary.tracked() - summary.idle();
+    if (untracked > 0) {
+      std::snprintf(err, sizeof err, "target not tracked on %u of %u frames (lost or hidden)",
+                    untracked, summary.frames() - summary.idle());
+      reporter.report(err);
+    }
     if (source.skippedFrames() > 0) {
       std::snprintf(err, sizeof err, "%d damaged frames skipped", source.skippedFrames());
       reporter.report(err);
@@ -100,7 +108,15 @@ void printSummary(const AppOptions& opt, const char* program, const Pipeline& pi
       formatLinkStats(name, link->stats(), err + n, sizeof err - static_cast<size_t>(n));
   }
   if (failed) {  // the error line said why; this says how far it got, if anywhere
-    if (pipeline.frames() > 0) reporter.report(err);
+    if (pipeline.frames() == 0) return;
+    reporter.report(err);
+    if (r != StepResult::SourceError) return;
+    summary.format(end.runUs, err, sizeof err);  // what was tracked before it broke
+    reporter.report(err);
+    if (!opt.skipBadFrames && source.skippedFrames() == 0)
+      reporter.report(
+          "next: a recording damaged or cut short mid-way: --skip-bad-frames skips its bad "
+          "frames (counted) and goes on to the end");
     return;
   }
   reporter.report(err);

@@ -15,9 +15,12 @@ namespace cuetrack::app {
 // frames when that is > 0 (the scene's own length otherwise). skipBadFrames: a recording
 // skips damaged frames (counted, skippedFrames()) instead of failing. nullptr + one line
 // in err on failure.
-// gtPath: a recording's ground truth under another name (nullptr: its own).
+// gtPath: a recording's ground truth under another name (nullptr: its own);
+// gtOptional: the target comes from elsewhere, so ground truth beside the recording that
+// does not fit is left out with the source's warning() instead of failing it.
 FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen,
-                        bool skipBadFrames = false, const char* gtPath = nullptr);
+                        bool skipBadFrames = false, const char* gtPath = nullptr,
+                        bool gtOptional = false);
 
 // After openSource(nullptr, ...): which source the default chose and why, one phrase, e.g.
 // "synth:moving, a generated scene (no Kinect found; --source to choose)". Else spec.
