@@ -31,10 +31,11 @@ void describeTarget(const AppOptions& opt, const char* groundTruthName, bool gro
   }
 }
 
-// The link's counters in one clause, e.g. "serial sent 10 tx-dropped 0 rx 2 ...".
+// The link's counters at the end in one clause, e.g. "serial sent 10 tx-dropped 0 rx 2 ...":
+// what is still queued then never reaches the peer, so it counts as dropped.
 int formatLinkStats(const char* name, const platform::LinkStats& s, char* out, size_t n) {
   return std::snprintf(out, n, "%s sent %u tx-dropped %u rx %u rx-errors %u refused %u", name,
-                       static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
+                       static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped + s.queued),
                        static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors),
                        static_cast<unsigned>(s.rxRefused));
 }
@@ -82,7 +83,7 @@ void printSummary(const AppOptions& opt, const char* program, const Pipeline& pi
       std::snprintf(err, sizeof err, "%d damaged frames skipped", source.skippedFrames());
       reporter.report(err);
     }
-    if (link && (link->stats().txDropped > 0 || link->stats().rxErrors > 0 ||
+    if (link && (link->stats().txDropped + link->stats().queued > 0 || link->stats().rxErrors > 0 ||
                  link->stats().rxRefused > 0)) {
       formatLinkStats(name, link->stats(), err, sizeof err);
       reporter.report(err);
