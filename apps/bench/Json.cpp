@@ -68,6 +68,7 @@ Json entryJson(const EntryResult& e) {
   Json avg;
   addFigures(avg, e.average(), e.sequencesRan() > 0);
   o["average"] = std::move(avg);
+  if (!e.partial.empty()) o["partial"] = e.partial;  // interrupted: the figures so far
   return o;
 }
 

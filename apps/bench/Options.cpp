@@ -59,7 +59,9 @@ const char* kFooter =
     "  sequence was missing or broken (unreadable, no ground truth, a first box outside\n"
     "  the image, frames changing size) or an output (stdout, --json, --markdown, --csv,\n"
     "  --plots, --results, --overlay, --video) failed: each is reported and the rest\n"
-    "  goes on; 2 bad command line";
+    "  goes on; 2 bad command line (an unknown scene, an output that would overwrite\n"
+    "  an input or another output, too); 3 interrupted (SIGINT, SIGTERM, SIGHUP): the\n"
+    "  report, --json and --markdown hold the figures so far, marked partial";
 
 // What the declarations fill besides Options: the lists read in command-line order.
 struct Lists {
@@ -143,33 +145,11 @@ std::string usage() {
   return cmd.help();
 }
 
-bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std::string* err) {
-  *help = false;
-  cli::Command cmd("cuetrack-bench", kAbout, kFooter);
-  Lists l;
-  declare(cmd, o, &l);
-  switch (cmd.check(argc, argv, err)) {
-    case cli::Command::Parsed::Help:
-      *help = true;
-      return true;
-    case cli::Command::Parsed::Error: {
-      const std::string pointer = " (see --help)";  // main adds it
-      if (err->size() > pointer.size() &&
-          err->compare(err->size() - pointer.size(), pointer.size(), pointer) == 0)
-        err->resize(err->size() - pointer.size());
-      return false;
-    }
-    case cli::Command::Parsed::Run:
-      break;
-  }
-  if (l.runs > 0) o->runs = static_cast<int>(l.runs);
-  if (l.peerRuns > 0) o->peerRuns = static_cast<int>(l.peerRuns);
-  if (l.frames > 0) o->maxFrames = static_cast<int>(l.frames);
-  if (l.maxMem > 0) o->maxMemMiB = static_cast<size_t>(l.maxMem);
-  if (l.stride > 0) o->stride = static_cast<int>(l.stride);
-  if (l.dropPct >= 0) o->dropPct = static_cast<int>(l.dropPct);
+namespace {
 
-  std::vector<std::string> trackers, configs;
+// --tracker's and --config's lists, each name checked.
+bool readTrackers(const Lists& l, std::vector<std::string>* trackers,
+                  std::vector<std::string>* configs, std::string* err) {
   for (const std::string& v : l.trackers) {
     for (const std::string& t : splitComma(v)) {
       if (t.empty()) {
@@ -177,9 +157,9 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
         return false;
       }
       if (t == "opencv-all") {
-        for (int p = 0; p < kNumPeers; ++p) trackers.push_back(peerName(p));
+        for (int p = 0; p < kNumPeers; ++p) trackers->push_back(peerName(p));
       } else if (t == "cuetrack" || isPeerName(t)) {
-        trackers.push_back(t);
+        trackers->push_back(t);
       } else {
         *err = "--tracker: unknown tracker '" + t + "'";
         return false;
@@ -198,11 +178,14 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
                "best-nofastmotion, best-nocorrelation, 1.1-centrednegatives, best-template)";
         return false;
       }
-      configs.push_back(c);
+      configs->push_back(c);
     }
   }
+  return true;
+}
 
-  // --gt, --from, --to and --reverse wait for their SEQUENCE: the command line's order.
+// --gt, --from, --to and --reverse wait for their SEQUENCE: the command line's order.
+bool readSequences(cli::Command& cmd, const Lists& l, Options* o, std::string* err) {
   SequenceArg pending;
   size_t next[5] = {0, 0, 0, 0, 0};  // gt, from, to, sequence, (reverse)
   for (const CLI::Option* opt : cmd.app().parse_order()) {
@@ -244,9 +227,12 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
     *err = "no sequence given";
     return false;
   }
-  if (trackers.empty()) trackers.push_back("cuetrack");
-  if (configs.empty()) configs.push_back("best");
-  if (o->peerRuns < 0) o->peerRuns = o->runs;
+  return true;
+}
+
+// Every tracker once, cuetrack once per configuration, in the command line's order.
+void makeEntries(const std::vector<std::string>& trackers, const std::vector<std::string>& configs,
+                 Options* o) {
   o->entries.clear();
   for (const std::string& t : trackers) {
     bool dup = false;
@@ -262,6 +248,42 @@ bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std
       o->entries.push_back({t, "default", o->peerRuns});
     }
   }
+}
+
+}  // namespace
+
+bool parseOptions(int argc, const char* const* argv, Options* o, bool* help, std::string* err) {
+  *help = false;
+  cli::Command cmd("cuetrack-bench", kAbout, kFooter);
+  Lists l;
+  declare(cmd, o, &l);
+  switch (cmd.check(argc, argv, err)) {
+    case cli::Command::Parsed::Help:
+      *help = true;
+      return true;
+    case cli::Command::Parsed::Error: {
+      const std::string pointer = " (see --help)";  // main adds it
+      if (err->size() > pointer.size() &&
+          err->compare(err->size() - pointer.size(), pointer.size(), pointer) == 0)
+        err->resize(err->size() - pointer.size());
+      return false;
+    }
+    case cli::Command::Parsed::Run:
+      break;
+  }
+  if (l.runs > 0) o->runs = static_cast<int>(l.runs);
+  if (l.peerRuns > 0) o->peerRuns = static_cast<int>(l.peerRuns);
+  if (l.frames > 0) o->maxFrames = static_cast<int>(l.frames);
+  if (l.maxMem > 0) o->maxMemMiB = static_cast<size_t>(l.maxMem);
+  if (l.stride > 0) o->stride = static_cast<int>(l.stride);
+  if (l.dropPct >= 0) o->dropPct = static_cast<int>(l.dropPct);
+
+  std::vector<std::string> trackers, configs;
+  if (!readTrackers(l, &trackers, &configs, err) || !readSequences(cmd, l, o, err)) return false;
+  if (trackers.empty()) trackers.push_back("cuetrack");
+  if (configs.empty()) configs.push_back("best");
+  if (o->peerRuns < 0) o->peerRuns = o->runs;
+  makeEntries(trackers, configs, o);
   return true;
 }
 

@@ -32,6 +32,7 @@ struct EntryResult {
   std::string config;   // "1.1" ... "best" for cuetrack, "default" for peers
   int runs = 0;
   std::vector<SequenceResult> sequences;  // one per sequence, in command-line order
+  std::string partial = "";  // "" for a whole run, else why it stopped early (a signal)
 
   std::string label() const {
     return config == "default" || config.empty() ? tracker : tracker + " " + config;

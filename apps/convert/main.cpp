@@ -12,6 +12,7 @@
 #include "cuetrack/cli/Command.hpp"
 #include "cuetrack/cli/Values.hpp"
 #include "cuetrack/drivers/OpenSource.hpp"
+#include "cuetrack/drivers/SceneCatalogue.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/Signals.hpp"
 
@@ -31,17 +32,20 @@ const char* kAbout =
 std::string footer() {
   return std::string("SOURCE is one of:\n") + frameSourceHelp() +
          "Outputs are whole or absent: a failed or interrupted run (SIGINT/SIGTERM/SIGHUP)\n"
-         "removes the folder it created, or the .avi and .gt.txt it wrote.\n"
+         "removes the folder it created, or the .avi and .gt.txt it was writing (an earlier\n"
+         ".avi replaced with --force stays until the new one is whole).\n"
          "formats: fakenect (default), rgbd (RGB-D folder), otb (OTB folder, colour),\n"
          "         avi (BoBoT-style MJPG video; --out is the .avi path)\n"
-         "exit codes: 0 ok, 1 read/write failed (stdout too), 2 bad arguments (an option\n"
-         "  given twice too)";
+         "exit codes: 0 ok, 1 read/write failed (stdout too) or interrupted, 2 bad arguments\n"
+         "  (an option given twice, an unknown scene, an output that would overwrite an\n"
+         "  input, --force or not)";
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  cuetrack::platform::ignoreWriteSignals();
+  // First: a stop at any moment ends as --help says (a partial output removed, exit 1).
+  cuetrack::platform::installStopSignals();
   std::vector<std::string> sources;
   std::string out, format = "fakenect", gt;
   bool bench = false, force = false;
@@ -66,7 +70,15 @@ int main(int argc, char** argv) {
   if (sources.empty() || (!bench && out.empty()))
     return cmd.fail("SOURCE and --out (or --bench) are required");
   const char* spec = sources[0].c_str();
+  if (!knownSceneSource(spec, err, sizeof err)) return cmd.fail(err);  // exit 2, every tool
   if (!gt.empty()) opt.gtPath = gt.c_str();
+  if (!bench) {
+    cli::OutputGuard inputs;
+    inputs.source("SOURCE", spec);
+    inputs.input("--gt", gt);
+    if (const int rc = checkSequenceOut("cuetrack-convert", format.c_str(), out.c_str(), inputs))
+      return rc;
+  }
   std::unique_ptr<FrameSource> src = openFrameSource(spec, opt, err, sizeof err);
   if (!src) {
     std::fprintf(stderr, "cuetrack-convert: %s\n", err);
@@ -79,6 +91,10 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::clock_t c0 = std::clock();
     for (;;) {
+      if (cuetrack::platform::stopRequested()) {
+        std::fprintf(stderr, "cuetrack-convert: interrupted after %d frames\n", n);
+        return cli::kExitFailed;
+      }
       const ReadStatus st = src->next(gSlot);
       if (st == ReadStatus::End) break;
       if (st == ReadStatus::Error) {

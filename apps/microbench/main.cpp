@@ -13,6 +13,7 @@
 #include "cuetrack/core/config/Config.hpp"
 #include "cuetrack/core/kernels/Integral.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 
 namespace cli = cuetrack::cli;
 namespace ig = cuetrack::integral;
@@ -97,14 +98,16 @@ std::string exitCodes() {
       "ISAs in this build:";
   for (const Isa& isa : kIsas) t += std::string(" ") + isa.name;
   t += std::string(" (active: ") + ig::activeIsa() + ")\n";
-  t += "exit codes: 0 done; 1 a SIMD kernel's result differs from the scalar reference;\n"
-       "  2 bad command line (an option given twice too)";
+  t += "exit codes: 0 done; 1 a SIMD kernel's result differs from the scalar reference,\n"
+       "  or interrupted (SIGINT, SIGTERM, SIGHUP); 2 bad command line (an option given\n"
+       "  twice too)";
   return t;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  cuetrack::platform::installStopSignals();  // first: a stop at any moment ends as --help says
   int runs = 200, width = cuetrack::kMaxImageWidth, height = cuetrack::kMaxImageHeight;
   int icountFrames = -1;
   std::string isaName;
@@ -161,6 +164,10 @@ int main(int argc, char** argv) {
       if (!std::strcmp(isa.name, "avx2") && !ig::avx2Available()) continue;
       const uint32_t check = runKernel(isa, k, width, height);  // warm caches
       for (int r = 0; r < runs; ++r) {
+        if (cuetrack::platform::stopRequested()) {
+          std::fprintf(stderr, "cuetrack-microbench: interrupted (the figures above are whole)\n");
+          return 1;
+        }
         const uint64_t t0 = clock.nowUs();
         runKernel(isa, k, width, height);
         gTimesUs[r] = clock.nowUs() - t0;

@@ -4,8 +4,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "RecordOptions.hpp"
+#include "cuetrack/cli/OutputGuard.hpp"
 #include "cuetrack/drivers/FakenectWriter.hpp"
 #include "cuetrack/drivers/KinectSource.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
@@ -102,6 +104,7 @@ void progress(const record::Options& opt, int frames, double seconds, bool final
 }  // namespace
 
 int main(int argc, char** argv) {
+  platform::installStopSignals();  // first: a stop at any moment ends as --help says
   record::Options opt;
   if (const int rc = record::parse(argc, argv, &opt); rc >= 0) return rc;
   if (opt.list) return listDevices();
@@ -112,7 +115,15 @@ int main(int argc, char** argv) {
     return record::kExitUsage;
   }
 #endif
-  platform::installStopSignals();
+  // The one output guard of every tool: a replayed recording (the fakenect library reads
+  // FAKENECT_PATH) is an input; --out may be neither it nor inside it.
+  cli::OutputGuard guard;
+  if (const char* replay = std::getenv("FAKENECT_PATH")) guard.input("FAKENECT_PATH", replay);
+  guard.outputFolder("--out", opt.outDir);
+  if (std::string clash; !guard.check(&clash)) {
+    std::fprintf(stderr, "cuetrack-record: %s\n", clash.c_str());
+    return record::kExitUsage;
+  }
   opt.kinect.stopRequested = &platform::stopRequested;
   if (!gKinect.open(opt.kinect)) {
     std::fprintf(stderr, "cuetrack-record: %s\n", gKinect.error());

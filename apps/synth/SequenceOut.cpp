@@ -1,7 +1,10 @@
 #include "SequenceOut.hpp"
 
 #include <ftw.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <cstdio>
 #include <cstring>
@@ -26,8 +29,21 @@ int removeEntry(const char* path, const struct stat*, int, FTW*) {
 
 void SequenceOut::discard() {
   if (!removeDir.empty()) nftw(removeDir.c_str(), removeEntry, 16, FTW_DEPTH | FTW_PHYS);
-  for (const std::string& f : removeFiles)
-    if (!f.empty()) ::unlink(f.c_str());
+}
+
+bool SequenceOut::commit(char* err, size_t errLen) {
+  for (const Move& m : moves) {
+    if (m.from.empty()) continue;
+    if (::rename(m.from.c_str(), m.to.c_str()) != 0) {
+      std::snprintf(err, errLen, "%s: cannot move the finished output there: %s", m.to.c_str(),
+                    std::strerror(errno));
+      return false;
+    }
+  }
+  if (moves[0].from.empty()) return true;
+  ::rmdir(removeDir.c_str());  // the staging folder, empty now
+  removeDir.clear();
+  return true;
 }
 
 namespace {
@@ -88,6 +104,37 @@ std::unique_ptr<SequenceOut> openOut(const char* format, const char* dir, const 
 }
 }  // namespace
 
+namespace {
+// An .avi and its .gt.txt, written in a staging folder beside them (.NAME.partial-PID),
+// so that a failed or interrupted run leaves the earlier files (--force) untouched and
+// removes only what it made.
+std::unique_ptr<SequenceOut> openStagedVideo(const char* avi, const std::string& gt,
+                                             const char* name, double fps, char* err,
+                                             size_t errLen) {
+  const std::string path = avi;
+  const size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  const std::string file = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::string stage = folder + (slash == std::string::npos ? "/." : ".") + file +
+                            ".partial-" + std::to_string(::getpid());
+  if (::mkdir(stage.c_str(), 0777) != 0) {
+    std::snprintf(err, errLen, "%s: cannot create a folder beside it: %s", avi,
+                  std::strerror(errno));
+    return nullptr;
+  }
+  const std::string staged = stage + "/" + file;
+  std::unique_ptr<SequenceOut> o = openOut("avi", staged.c_str(), name, fps, err, errLen);
+  if (!o) {
+    ::rmdir(stage.c_str());
+    return nullptr;
+  }
+  o->removeDir = stage;
+  o->moves[0] = {staged, path};
+  o->moves[1] = {staged.substr(0, staged.size() - 4) + ".gt.txt", gt};
+  return o;
+}
+}  // namespace
+
 std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir, const char* name,
                                              double fps, char* err, size_t errLen, bool force) {
   if (rec::pathTooLong(dir, err, errLen)) return nullptr;
@@ -104,15 +151,11 @@ std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir
       return nullptr;
     }
   }
-  const bool dirIsNew = !avi && !rec::exists(dir);
+  if (avi) return openStagedVideo(dir, gt, name, fps, err, errLen);
+  const bool dirIsNew = !rec::exists(dir);
   std::unique_ptr<SequenceOut> o = openOut(format, dir, name, fps, err, errLen);
   if (!o) return nullptr;
-  if (avi) {
-    o->removeFiles[0] = dir;
-    o->removeFiles[1] = gt;
-  } else if (dirIsNew) {
-    o->removeDir = dir;  // an existing folder is not ours to remove; a new one is
-  }
+  if (dirIsNew) o->removeDir = dir;  // an existing folder is not ours to remove; a new one is
   return o;
 }
 
@@ -137,12 +180,32 @@ int copySequence(FrameSource& src, SequenceOut& out, FrameSlot& slot, char* err,
     if (!out.write(slot)) return failed(out, out.error(), err, errLen);
     ++n;
   }
+  char why[512];
   if (!out.close()) {
-    char why[512];
     std::snprintf(why, sizeof why, "%s", out.error());
     return failed(out, why, err, errLen);
   }
+  if (!out.commit(why, sizeof why)) return failed(out, why, err, errLen);
   return n;
+}
+
+int checkSequenceOut(const char* tool, const char* format, const char* out,
+                     const cli::OutputGuard& inputs) {
+  cli::OutputGuard guard = inputs;
+  std::string clash;
+  if (std::strcmp(format, "avi") == 0) {
+    const size_t n = std::strlen(out);
+    guard.output("--out", out);
+    guard.output("--out's ground truth",
+                 (n > 4 ? std::string(out, n - 4) : std::string(out)) + ".gt.txt");
+  } else {
+    guard.outputFolder("--out", out);
+  }
+  if (!guard.check(&clash)) {  // before anything is written, --force or not
+    std::fprintf(stderr, "%s: %s\n", tool, clash.c_str());
+    return cli::kExitUsage;
+  }
+  return 0;
 }
 
 int writeSequence(const char* tool, FrameSource& src, const char* format, const char* out,

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "cuetrack/cli/OutputGuard.hpp"
 #include "cuetrack/drivers/FrameSource.hpp"
 
 namespace cuetrack {
@@ -18,19 +19,27 @@ class SequenceOut {
   virtual bool write(const FrameSlot& frame) = 0;
   virtual bool close() = 0;
   virtual const char* error() const = 0;
-  // After a failure: removes what this output created (the folder it made, or the .avi
-  // and its .gt.txt), so a later run cannot read a partial output as a whole one.
+  // After a failure: removes what this output created (the folder it made, or the
+  // partial .avi and .gt.txt in their staging folder), so a later run cannot read a
+  // partial output as a whole one. A file the run did not create is never removed.
   void discard();
+  // After a successful close: the staged files moved to their names (replacing, with
+  // --force, the earlier ones only now). False with a line in err.
+  bool commit(char* err, size_t errLen);
 
   // Set by openSequenceOut.
-  std::string removeDir;       // a folder it made: removed whole
-  std::string removeFiles[2];  // files it made (or overwrote with --force)
+  std::string removeDir;  // a folder it made: removed whole
+  struct Move {
+    std::string from, to;
+  };
+  Move moves[2];  // an .avi and its .gt.txt, staged in removeDir
 };
 
 // nullptr with a line in err for an unknown format or an output that cannot be created.
 // fps: the source's frame rate (FrameSource::nominalFps), the avi container's rate; 0 =
 // unknown, then 30 (the Kinect's). An existing .avi or its .gt.txt is refused unless
-// `force` (folder formats refuse a folder holding a recording, always).
+// `force` (folder formats refuse a folder holding a recording, always). An .avi and its
+// .gt.txt are written in a staging folder beside them and take their names on commit().
 std::unique_ptr<SequenceOut> openSequenceOut(const char* format, const char* dir, const char* name,
                                              double fps, char* err, size_t errLen,
                                              bool force = false);
@@ -48,5 +57,11 @@ int copySequence(FrameSource& src, SequenceOut& out, FrameSlot& slot, char* err,
 // written in *frames, 2 for an unknown format (a bad command line), 1 for any other failure.
 int writeSequence(const char* tool, FrameSource& src, const char* format, const char* out,
                   const char* name, bool force, FrameSlot& slot, int* frames);
+
+// Before the source is opened: `out` in `format` (an .avi and its .gt.txt, or a folder)
+// may not be, or lie inside, an input of `inputs` (the one guard of every tool,
+// cli::OutputGuard), --force or not. 0, or 2 after the line "TOOL: ..." on stderr.
+int checkSequenceOut(const char* tool, const char* format, const char* out,
+                     const cli::OutputGuard& inputs);
 
 }  // namespace cuetrack

@@ -36,9 +36,10 @@ const char* kAbout =
 
 const char* kExitCodes =
     "Outputs are whole or absent: a failed or interrupted run (SIGINT/SIGTERM/SIGHUP)\n"
-    "removes the folder it created, or the .avi and .gt.txt it wrote.\n"
-    "exit codes: 0 ok, 1 write failed (stdout too), 2 bad arguments (an option given\n"
-    "twice too)";
+    "removes the folder it created, or the .avi and .gt.txt it was writing (an earlier\n"
+    ".avi replaced with --force stays until the new one is whole).\n"
+    "exit codes: 0 ok, 1 write failed (stdout too) or interrupted, 2 bad arguments (an\n"
+    "option given twice, an unknown scene, an output over an input, --force or not)";
 
 // The catalogue's rows for --help, a name and its summary a line.
 std::string sceneTable() {
@@ -56,7 +57,8 @@ std::string sceneTable() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  cuetrack::platform::ignoreWriteSignals();
+  // First: a stop at any moment ends as --help says (a partial output removed, exit 1).
+  cuetrack::platform::installStopSignals();
   std::string scene, out, format = "fakenect";
   int frames = -1, width = 640, height = 480;
   uint64_t seed = 1;
@@ -82,6 +84,10 @@ int main(int argc, char** argv) {
     return cuetrack::platform::stdoutWritten("cuetrack-synth") ? 0 : cli::kExitFailed;
   }
   if (scene.empty() || out.empty()) return cmd.fail("--scene and --out are required (see --help)");
+  cli::OutputGuard inputs;  // rand:SEED:DATA reads DATA's stills
+  if (scene.rfind("rand:", 0) == 0) inputs.source("--scene", scene);
+  if (const int rc = checkSequenceOut("cuetrack-synth", format.c_str(), out.c_str(), inputs))
+    return rc;
   std::unique_ptr<FrameSource> src;
   if (scene.rfind("rand:", 0) == 0) {
     // Drawn scenes come through the readers' one factory (the stills need OpenCV).

@@ -19,6 +19,7 @@
 #include "cuetrack/core/tracker/Tracker.hpp"
 #include "cuetrack/drivers/SyntheticSource.hpp"
 #include "cuetrack/platform/StdoutCheck.hpp"
+#include "cuetrack/platform/linux/Signals.hpp"
 
 using namespace cuetrack;
 
@@ -49,10 +50,45 @@ double median(uint32_t* v, int n) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// Tracks `frames` updates over the rendered frames (forwards then backwards), keeping each
+// update's stage times; with hash, an FNV-1a hash of every frame's box, confidence and
+// state. The number of frames it learned on.
+template <typename FrameOf>
+int timeUpdates(int frames, const FrameOf& frameOf, uint64_t* hash) {
+  int learned = 0;
+  uint64_t h = 14695981039346656037ULL;
+  auto mix = [&h](const void* p, std::size_t bytes) {
+    const unsigned char* b = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ b[i]) * 1099511628211ULL;
+  };
+  for (int n = 0; n < frames && !platform::stopRequested(); ++n) {
+    const int period = 2 * (kRendered - 1);
+    const int k = (n + 1) % period;
+    Frame f = frameOf(slots[k < kRendered ? k : period - k]);
+    f.timeUs = static_cast<uint64_t>(n + 1) * 33333u;  // time always runs forwards
+    const TrackResult r = tracker.update(f);
+    learned += r.learned ? 1 : 0;
+    if (hash) {
+      const float v[5] = {r.box.x, r.box.y, r.box.w, r.box.h, r.confidence};
+      mix(v, sizeof v);
+      const uint8_t st = static_cast<uint8_t>(r.state);
+      mix(&st, 1);
+    }
+    totalUs[n] = r.timesUs.total;
+    featuresUs[n] = r.timesUs.features;
+    predictUs[n] = r.timesUs.predict;
+    weighUs[n] = r.timesUs.weigh;
+    learnUs[n] = r.timesUs.learn;
+  }
+  if (hash) *hash = h;
+  return learned;
+}
+
 const char* kExitCodes =
     "exit codes: 0 done, 1 a frame of the scene could not be rendered, the tracker\n"
-    "  refused its first box, or stdout could not be written, 2 bad command line (an\n"
-    "  unknown --scene, an option given twice too; a configuration the tracker refuses)";
+    "  refused its first box, stdout could not be written, or interrupted (SIGINT,\n"
+    "  SIGTERM, SIGHUP), 2 bad command line (an unknown --scene, an option given twice\n"
+    "  too; a configuration the tracker refuses)";
 
 constexpr int kExitRun = 1;
 constexpr int kExitUsage = 2;  // what the command line asked for cannot run
@@ -60,6 +96,7 @@ constexpr int kExitUsage = 2;  // what the command line asked for cannot run
 }  // namespace
 
 int main(int argc, char** argv) {
+  platform::installStopSignals();  // first: a stop at any moment ends as --help says
   std::string presetName = "2.1";
   std::string scene = "moving";
   int frames = 150, particles = -1, weak = -1;
@@ -123,31 +160,13 @@ int main(int argc, char** argv) {
                  scene.c_str(), toString(e));
     return kExitRun;
   }
-  int n = 0, learned = 0;
-  uint64_t h = 14695981039346656037ULL;
-  auto mix = [&h](const void* p, std::size_t bytes) {
-    const unsigned char* b = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ b[i]) * 1099511628211ULL;
-  };
-  while (n < frames) {
-    const int period = 2 * (kRendered - 1);
-    const int k = (n + 1) % period;
-    Frame f = frameOf(slots[k < kRendered ? k : period - k]);
-    f.timeUs = static_cast<uint64_t>(n + 1) * 33333u;  // time always runs forwards
-    const TrackResult r = tracker.update(f);
-    learned += r.learned ? 1 : 0;
-    if (hash) {
-      const float v[5] = {r.box.x, r.box.y, r.box.w, r.box.h, r.confidence};
-      mix(v, sizeof v);
-      const uint8_t st = static_cast<uint8_t>(r.state);
-      mix(&st, 1);
-    }
-    totalUs[n] = r.timesUs.total;
-    featuresUs[n] = r.timesUs.features;
-    predictUs[n] = r.timesUs.predict;
-    weighUs[n] = r.timesUs.weigh;
-    learnUs[n] = r.timesUs.learn;
-    ++n;
+  uint64_t h = 0;
+  const int learned = timeUpdates(frames, frameOf, hash ? &h : nullptr);
+  const int n = frames;
+  if (platform::stopRequested()) {
+    std::fprintf(stderr, "cuetrack-trackspeed: interrupted before the %d updates were timed\n",
+                 frames);
+    return kExitRun;
   }
   if (hash) std::printf("hash %016llx\n", static_cast<unsigned long long>(h));
   if (icount) {

@@ -702,7 +702,7 @@ TEST_CASE("documented exit codes, each with one line naming what is at fault") {
       {{CUETRACK_APP_BIN, "--config", "9.9"}, 2, "--config 9.9: unknown preset"},
       {{CUETRACK_APP_BIN, "--serial", "/dev/null", "--baud", "300"}, 2, "--baud 300"},
       {{CUETRACK_APP_BIN, "--baud", "1234", "--frames", "2"}, 2, "--baud 1234"},
-      {{CUETRACK_APP_BIN, "--source", "synth:nosuchscene"}, 1, "synth:nosuchscene"},
+      {{CUETRACK_APP_BIN, "--source", "synth:nosuchscene"}, 2, "synth:nosuchscene"},
       {{CUETRACK_APP_BIN, "--serial", "/nonexistent/tty"}, 3, "/nonexistent/tty: cannot open"},
       {{CUETRACK_APP_BIN, "--out", "/dev/full", "--frames", "2"}, 3, "/dev/full"},
       {{CUETRACK_APP_BIN, "--box", "5000,5000,10,10", "--frames", "2"}, 4, "--box 5000,5000,10,10"},

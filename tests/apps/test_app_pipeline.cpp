@@ -535,7 +535,7 @@ TEST_CASE("on a congested line a heartbeat is tried once a second, and every los
   const platform::LinkStats& s = rig.link.stats();
   // Every frame sent a TRACK (queued or dropped); the rest are heartbeats. The last
   // successful write never moves, so only the clock may pace them: 1, 2, 3, 4 s.
-  const uint32_t heartbeats = s.sent + s.txDropped - 150;
+  const uint32_t heartbeats = s.sent + s.txDropped + s.queued - 150;
   CHECK(heartbeats >= 3);
   CHECK(heartbeats <= 5);
   CHECK(s.txDropped > 100);  // most tracks lost, each counted once
@@ -589,7 +589,8 @@ TEST_CASE("a vanished serial peer is reported, tracking continues, the link come
   CHECK(msgs.back().u.track.state == CTP_STATE_TRACKING);
   // The messages of the outage were dropped and counted; seq shows them as a gap.
   CHECK(rig.link.stats().txDropped >= 5);
-  CHECK(msgs.back().u.track.seq == rig.link.stats().sent + rig.link.stats().txDropped - 1);
+  CHECK(msgs.back().u.track.seq ==
+        rig.link.stats().sent + rig.link.stats().txDropped + rig.link.stats().queued - 1);
 }
 
 TEST_CASE("a stalled peer never blocks: messages that do not fit are dropped and counted") {
@@ -598,7 +599,7 @@ TEST_CASE("a stalled peer never blocks: messages that do not fit are dropped and
   for (int i = 0; i < 200; ++i) REQUIRE(rig.step() == StepResult::Continue);
   CHECK(rig.sink.size() == 200);
   CHECK(rig.link.stats().txDropped > 100);
-  CHECK(rig.link.stats().sent + rig.link.stats().txDropped >= 200);
+  CHECK(rig.link.stats().sent + rig.link.stats().txDropped + rig.link.stats().queued >= 200);
   // The host sees every dropped message as a gap in seq (section 3 of the protocol).
   rig.cable.setCapacityAtoB(1 << 20);
   rig.host.drain();  // what got through before the stall
@@ -607,7 +608,8 @@ TEST_CASE("a stalled peer never blocks: messages that do not fit are dropped and
   REQUIRE_FALSE(msgs.empty());
   const ctp_message_t& last = msgs.back();
   REQUIRE(last.type == CTP_MSG_TRACK);
-  CHECK(last.u.track.seq == rig.link.stats().sent + rig.link.stats().txDropped - 1);
+  CHECK(last.u.track.seq ==
+        rig.link.stats().sent + rig.link.stats().txDropped + rig.link.stats().queued - 1);
   CHECK(last.u.track.seq > rig.link.stats().sent);  // the drops left a gap
 }
 
@@ -686,6 +688,24 @@ TEST_CASE("steady-state frames, commands and replies allocate nothing") {
   cuetrack::test::AllocScope control;  // positive control: the counter sees allocations
   std::vector<int> v(10);
   CHECK(control.allocations() >= 1);
+}
+
+TEST_CASE(
+    "every message is counted once, sent or dropped, the queue included: the far end agrees") {
+  static Rig rig(60, true);
+  rig.cable.setCapacityAtoB(600);  // the peer reads 600 bytes, then stops: some stay queued
+  for (int i = 0; i < 60; ++i) REQUIRE(rig.step() == StepResult::Continue);
+  rig.link.drain(20);  // at exit: what cannot leave stays queued
+  const platform::LinkStats& s = rig.link.stats();
+  const auto got = rig.host.drain();
+  CHECK(s.queued > 0);
+  CHECK(s.txDropped > 0);
+  CHECK(got.size() == s.sent);  // "sent" is what the peer could read, no more
+  // Each message took a seq: the last one read, plus what never left, is the total.
+  REQUIRE(!got.empty());
+  const uint32_t lastSeq = got.back().u.track.seq;
+  CHECK(s.sent + s.txDropped + s.queued >= lastSeq + 1);
+  CHECK(s.sent + s.txDropped + s.queued >= 60);  // a TRACK a frame, and heartbeats
 }
 
 TEST_CASE("drain waits for room and puts queued messages on the line, bounded") {

@@ -81,6 +81,12 @@ TEST_CASE("a 1280x720 .avi and a 1920x1080 .mp4 track with boxes in their own pi
   std::snprintf(box, sizeof box, "%d,%d,%d,%d", cvRound(b.x), cvRound(b.y), cvRound(b.w),
                 cvRound(b.h));
   requireTrackedInSourcePixels(avi, 1280, 720, {"--box", box}, tmp);
+  // A box large enough in the video's pixels but not once scaled down: the line says so.
+  const std::string tinyErr = tmp / "tiny";
+  REQUIRE(run({CUETRACK_APP_BIN, "--source", avi.c_str(), "--box", "100,100,4,4"}, tinyErr) == 4);
+  CHECK(readText(tinyErr).find("(the image is 1280x720, scaled down to 640x360 for the tracker, "
+                               "where the box is 2.0x2.0 px; give a larger box)") !=
+        std::string::npos);
 
   const std::string mp4 = tmp / "fullhd.mp4";
   if (!writeMovingRectVideo(mp4, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), 1920, 1080,

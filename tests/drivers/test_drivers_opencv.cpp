@@ -289,7 +289,16 @@ TEST_CASE("BoBoT video reader: own video, unreadable video", "[opencv][bobot]") 
     test::writeText(bad, std::string(5000, 'x'));
     BobotVideoReader r;
     CHECK_FALSE(r.open(bad.c_str()));
-    CHECK(std::string(r.error()).find("bad.avi: cannot open video") != std::string::npos);
+    CHECK(std::string(r.error()).find("bad.avi: cannot open video: no stream to decode (the file "
+                                      "is cut short, damaged or holds no video track") !=
+          std::string::npos);
+  }
+  SECTION("empty video") {
+    const std::string empty = tmp / "empty.mp4";
+    test::writeText(empty, "");
+    BobotVideoReader r;
+    CHECK_FALSE(r.open(empty.c_str()));
+    CHECK(std::string(r.error()) == empty + ": empty file (0 bytes): no video to read");
   }
   SECTION("missing video") {
     BobotVideoReader r;

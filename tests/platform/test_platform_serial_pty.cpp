@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -228,6 +229,17 @@ TEST_CASE("a second opener of one port is refused, naming the holder; stale lock
           std::string::npos);
     REQUIRE(cuetrack::test::readFile(lock.c_str(), text, sizeof text));
     CHECK(std::strtol(text, nullptr, 10) == static_cast<long>(getpid()));
+  }
+  SECTION("a folder at the lock's path is said as what it is, not as a replaced lock") {
+    REQUIRE(::mkdir(lock.c_str(), 0755) == 0);
+    SerialPort p(dir.path);
+    REQUIRE(p.open(pty.a(), 115200));  // flock still keeps the port ours
+    CHECK(std::string(p.notice()) == std::string(pty.a()) + ": " + lock +
+                                         " is not a lock file (a folder or a link): the port is "
+                                         "used without a lock; remove it so the next run can "
+                                         "lock the port");
+    p.close();
+    CHECK(::rmdir(lock.c_str()) == 0);  // left as it was
   }
   SECTION("a lock folder we cannot use is no error; flock still keeps the port ours") {
     SerialPort p("/nonexistent/lockdir"), q("/nonexistent/lockdir");

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "CommandLineCheck.hpp"
 #include "Options.hpp"
-#include "OutputCheck.hpp"
 #include "PacedSource.hpp"
 #include "Pipeline.hpp"
 #include "PrefetchedSource.hpp"
@@ -20,7 +20,6 @@
 #include "Sources.hpp"
 #include "View.hpp"
 #include "WaitingSource.hpp"
-#include "cuetrack/platform/StdoutCheck.hpp"
 #include "cuetrack/platform/linux/FdTrackSink.hpp"
 #include "cuetrack/platform/linux/KeyFile.hpp"
 #include "cuetrack/platform/linux/MonotonicClock.hpp"
@@ -32,9 +31,6 @@
 
 namespace cuetrack::app {
 namespace {
-
-// A step's "no exit code yet": the run goes on.
-constexpr int kGoOn = -1;
 
 // What the run writes to (static storage, like every big object of the app).
 struct Outputs {
@@ -48,87 +44,10 @@ struct Outputs {
   platform::TrackLink* link = nullptr;  // serial or MAVLink, if any
 };
 
-// How a target can be given, for the line that says none can arrive.
-constexpr const char* kWaysToATarget =
-    "give --box X,Y,W,H, --select, or a link for a START (--serial DEV, --mavlink-udp "
-    "HOST:PORT)";
-
-// A target can come from the user: a box, a drag, or a START on a link.
-bool userTargetPossible(const AppOptions& opt) {
-  return opt.hasBox || opt.select || opt.serialPath || opt.mavlinkUdp;
-}
-
-// --source kinect or kinect:colour: a live camera, which has no ground truth.
-bool liveCamera(const AppOptions& opt) {
-  return opt.source && std::strncmp(opt.source, "kinect", 6) == 0;
-}
-
-// The command line and all that can be refused before anything opens (exit 2): a bad
-// option, a readable signing key, an output that is also an input, a baud rate, a view or
-// a camera this build lacks. Fills key with the MAVLink signing key when one is given.
-int checkCommandLine(int argc, char** argv, AppOptions& opt, uint8_t (&key)[32],
-                     platform::Reporter& reporter) {
-  char err[512] = "";
-  switch (parseOptions(argc, argv, &opt, err, sizeof err)) {
-    case ParseResult::Help:
-      std::fputs(usageText().c_str(), stdout);
-      return platform::stdoutWritten("cuetrack") ? kExitOk : kExitOutput;
-    case ParseResult::Error:
-      reporter.report(err);
-      return kExitUsage;
-    case ParseResult::Run:
-      break;
-  }
-  // The signing key, before anything runs: a key others can read is refused (exit 2).
-  if (opt.mavlinkKey && !platform::readKeyFile(opt.mavlinkKey, key, sizeof key, err, sizeof err)) {
-    std::snprintf(err + std::strlen(err), sizeof err - std::strlen(err), " (--mavlink-key)");
-    reporter.report(err);
-    return kExitUsage;
-  }
-  // Before anything opens: opening an output truncates it, and a reader may have it open.
-  if (!checkOutputs(opt, err, sizeof err)) {
-    reporter.report(err);
-    return kExitUsage;
-  }
-  // Refused even without --serial: a typo here would otherwise surface only on the
-  // day the port is added.
-  if (!platform::SerialPort::baudSupported(opt.baud)) {
-    std::snprintf(err, sizeof err, "--baud %d: unsupported (9600..921600, see --help)", opt.baud);
-    reporter.report(err);
-    return kExitUsage;
-  }
-  if ((opt.snapshotPath || opt.videoPath) && !viewBuilt()) {  // said before any frame is read
-    char why[256];
-    displayAvailable(why, sizeof why);  // the stub's "not built with OpenCV" line
-    std::snprintf(err, sizeof err, "%s: %s", opt.snapshotPath ? "--snapshot" : "--video", why);
-    reporter.report(err);
-    return kExitUsage;
-  }
-  if (opt.show || opt.select) {
-    char why[256];
-    if (!displayAvailable(why, sizeof why)) {
-      std::snprintf(err, sizeof err, "%s: %s", opt.show ? "--show" : "--select", why);
-      reporter.report(err);
-      return kExitUsage;
-    }
-  }
-  if (opt.waitCamera && !kinectSupported()) {  // it would wait for ever
-    reporter.report("--wait-camera: this build has no Kinect driver (libfreenect missing)");
-    return kExitUsage;
-  }
-  // No way for a target to arrive: the run would stay idle to its end. A live camera has
-  // no ground truth; --no-gt drops it. (A source without it is found on its first frame.)
-  // --snapshot tracks nothing: it needs none.
-  if (!userTargetPossible(opt) && !opt.snapshotPath) {
-    const bool live = liveCamera(opt);
-    if (!opt.useGroundTruth || live) {
-      std::snprintf(err, sizeof err, "%s: nothing to track%s; %s", live ? opt.source : "--no-gt",
-                    live ? " (a live camera has no ground truth)" : "", kWaysToATarget);
-      reporter.report(err);
-      return kExitUsage;
-    }
-  }
-  return kGoOn;
+// The target comes from the user (--box, --select, --snapshot) or --no-gt drops the ground
+// truth: one beside the recording that does not fit is a warning, not a failed run.
+bool groundTruthOptional(const AppOptions& opt) {
+  return opt.hasBox || opt.select || opt.snapshotPath || !opt.useGroundTruth;
 }
 
 // The frame source; nullptr once the reason is reported. With --wait-camera the camera
@@ -140,16 +59,18 @@ FrameSource* openFrameSource(AppOptions& opt, const Clock& clock, platform::Slee
     static WaitingSource waiting(
         [](void* ctx, char* e, size_t n) {
           const AppOptions& o = *static_cast<const AppOptions*>(ctx);
-          return openSource(o.source, o.seed, o.frames, e, n, o.skipBadFrames);
+          return openSource(o.source, o.seed, o.frames, e, n, o.skipBadFrames, o.gtPath,
+                            groundTruthOptional(o));
         },
         &opt, clock, sleeper, reporter, &platform::stopRequested);
     waiting.tryOpen();
     return &waiting;
   }
   char err[512] = "";
-  FrameSource* source =
-      openSource(opt.source, opt.seed, opt.frames, err, sizeof err, opt.skipBadFrames);
+  FrameSource* source = openSource(opt.source, opt.seed, opt.frames, err, sizeof err,
+                                   opt.skipBadFrames, opt.gtPath, groundTruthOptional(opt));
   if (!source) reporter.report(err);
+  if (source && source->warning()[0] != '\0') reporter.report(source->warning());
   return source;
 }
 
@@ -376,7 +297,8 @@ RunEnd runLoop(const AppOptions& opt, Pipeline& pipeline, const FrameSlot& slot,
     if (pipeline.frames() == before) continue;    // no frame this step
     const ctp_track_t& t = pipeline.lastTrack();  // in the source's pixels, as sent out
     const Box truth = slot.scale.toSource(slot.groundTruth);
-    summary.add(t, slot.hasGroundTruth ? &truth : nullptr);
+    // --no-gt: the ground truth is not scored either (no overlap figure at the end).
+    summary.add(t, opt.useGroundTruth && slot.hasGroundTruth ? &truth : nullptr);
     if (!opt.show && !out.videoOk) continue;
     ViewTrack vt;
     vt.frameIndex = static_cast<uint32_t>(slot.index);
@@ -465,12 +387,14 @@ int exitCode(const RunEnd& end, bool outputFailed) {
 }  // namespace
 
 int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
+  // First: a stop at any moment (while the command line, the key or the source is read)
+  // ends the run with its summary and exit 0, as --help says.
+  platform::installStopSignals();
   platform::StderrReporter reporter("cuetrack");
   AppOptions opt;
   static uint8_t mavlinkKey[32];
   if (const int code = checkCommandLine(argc, argv, opt, mavlinkKey, reporter); code != kGoOn)
     return code;
-  platform::installStopSignals();
 
   static platform::MonotonicClock clock;
   if (!tracker.configure(opt.preset, opt.seed, &clock)) {
@@ -486,7 +410,7 @@ int runCuetrack(int argc, char** argv, TrackerPort& tracker) {
   if (!source) return kExitSource;
   static FrameSlot slot;  // ~1.5 MiB
   static char groundTruthName[512];
-  describeGroundTruth(opt.source, groundTruthName, sizeof groundTruthName);
+  describeGroundTruth(opt.source, groundTruthName, sizeof groundTruthName, opt.gtPath);
   bool groundTruth = false;
   if (const int code = checkGroundTruth(opt, groundTruthName, source, slot, &groundTruth, reporter);
       code != kGoOn)

@@ -38,9 +38,10 @@ const char* kFooter =
     "exit codes: 0 done (end of source, --frames, SIGINT/SIGTERM/SIGHUP, STOP command),\n"
     "  1 source failed (cannot open, a read failed, a damaged frame, no decodable frame\n"
     "  at all, or a frame's size differs from the frame the track began on), 2 bad\n"
-    "  command line (an option given twice too; no way to a target; --show or --select\n"
-    "  without a display, a --select cancelled; an output (--out, --video, --snapshot)\n"
-    "  that is the source, lies inside its folder, or is another output), 3 output failed\n"
+    "  command line (an option given twice too; an unknown scene; no way to a target;\n"
+    "  --show or --select without a display, a --select cancelled; an output (--out,\n"
+    "  --video, --snapshot) that is the source, its ground truth or --gt, lies inside its\n"
+    "  folder, or is another output, --force or not), 3 output failed\n"
     "  (cannot open, a write to --out/stdout/--video/--snapshot failed, or --video does not\n"
     "  read back whole; tracking went on), 4 the --box, or the source's ground-truth box,\n"
     "  refused by the tracker";
@@ -86,11 +87,18 @@ cli::Convert three(float limit, float* out, const char* why) {
   };
 }
 
-// Every option of cuetrack, into *o (its texts into o->texts).
-void declare(cli::Command& cmd, AppOptions* o) {
+// A recording read from a path (a video or a folder), whose ground truth is a file.
+bool recordingSpec(const char* spec) {
+  if (spec == nullptr) return false;
+  for (const char* generated : {"kinect", "camera", "synth", "rand:", "pan:", "still:"})
+    if (std::strncmp(spec, generated, std::strlen(generated)) == 0) return false;
+  return true;
+}
+
+// The source, the target and the outputs.
+void declareInputsOutputs(cli::Command& cmd, AppOptions* o) {
   AppOptions::Texts& t = o->texts;
-  const std::string source = "source", target = "target", see = "see it", outputs = "outputs",
-                    mavlink = "MAVLink (with --protocol mavlink)", run = "run";
+  const std::string source = "source", target = "target", see = "see it", outputs = "outputs";
   cmd.option("--source", "kinect[:colour]|camera[:N]|synth[:SCENE]|PATH", "the frames (below)",
              [&t](const std::string& v) {
                // kinect:MODE: the tracker needs colour, so both streams or colour alone.
@@ -110,6 +118,11 @@ void declare(cli::Command& cmd, AppOptions* o) {
                o->hasBox = why.empty();
                return why;
              })
+      ->group(target);
+  cmd.text("--gt", "FILE",
+           "a recording's ground truth under another name (else NAME.gt.txt or NAME.txt beside "
+           "a video, a folder's own)",
+           &t.gt)
       ->group(target);
   cmd.app()
       .add_flag("--no-gt", "ignore ground truth: wait for --box or a serial START command")
@@ -142,6 +155,12 @@ void declare(cli::Command& cmd, AppOptions* o) {
       ->group(outputs);
   cmd.text("--out", "FILE", "CSV, one row per frame ('-' = stdout)", &t.out)->group(outputs);
   cmd.flag("--stdout", "one line per frame on stdout as well", &o->forceStdout)->group(outputs);
+}
+
+// MAVLink's options.
+void declareMavlink(cli::Command& cmd, AppOptions* o) {
+  AppOptions::Texts& t = o->texts;
+  const std::string mavlink = "MAVLink (with --protocol mavlink)";
   cmd.option("--mavlink-sysid", "N", "our MAVLink system id, 1..255 (default 1, the vehicle's)",
              mavlinkId(&o->mavSysId))
       ->group(mavlink);
@@ -188,6 +207,12 @@ void declare(cli::Command& cmd, AppOptions* o) {
                return "";
              })
       ->group(mavlink);
+}
+
+// How the run goes.
+void declareRun(cli::Command& cmd, AppOptions* o) {
+  AppOptions::Texts& t = o->texts;
+  const std::string run = "run";
   cmd.option("--frames", "N", "stop after N frames (a synthetic scene then lasts N frames)",
              [o](const std::string& v) {
                long n = 0;  // 0 would run nothing and say "done"
@@ -213,8 +238,18 @@ void declare(cli::Command& cmd, AppOptions* o) {
                return cli::seed(v, &o->seed).empty() ? "" : "expected a non-negative integer";
              })
       ->group(run);
-  cmd.flag("--quiet", "no status line on stderr; at the end only losses are reported", &o->quiet)
+  cmd.flag("--quiet",
+           "no status lines on stderr; at the end only losses (frames not tracked or skipped, "
+           "messages dropped)",
+           &o->quiet)
       ->group(run);
+}
+
+// Every option of cuetrack, into *o (its texts into o->texts), in --help's order.
+void declare(cli::Command& cmd, AppOptions* o) {
+  declareInputsOutputs(cmd, o);
+  declareMavlink(cmd, o);
+  declareRun(cmd, o);
 }
 
 }  // namespace
@@ -246,6 +281,7 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
   out->videoPath = text("--video", t.video);
   if (cmd.given("--config")) out->preset = t.preset.c_str();
   out->useGroundTruth = !cmd.given("--no-gt");
+  out->gtPath = text("--gt", t.gt);
   // The first --mavlink-* option on the command line.
   static const char* const kMavlinkOnly[] = {
       "--mavlink-sysid",        "--mavlink-compid",  "--mavlink-mount",
@@ -264,6 +300,10 @@ ParseResult parseOptions(int argc, char** argv, AppOptions* out, char* err, size
                                                      std::strncmp(out->source, "kinect:", 7) != 0)))
     return fail("--wait-camera needs --source kinect or kinect:colour");
   if (out->select && out->hasBox) return fail("--select and --box: one target at a time");
+  if (out->gtPath && !out->useGroundTruth) return fail("--gt and --no-gt: one or the other");
+  if (out->gtPath && !recordingSpec(out->source))
+    return fail(std::string("--gt: ") + (out->source ? out->source : "the default source") +
+                " has no ground-truth file (--gt is for a recording: a video or a folder)");
   if (out->snapshotPath && (out->show || out->select || out->videoPath))
     return fail("--snapshot saves a frame and exits: not with --show, --select or --video");
   // A setting that would do nothing is refused rather than ignored.

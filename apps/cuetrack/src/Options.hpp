@@ -26,6 +26,7 @@ struct AppOptions {
   bool hasBox = false;
   Box box{};
   bool useGroundTruth = true;
+  const char* gtPath = nullptr;  // --gt FILE: the source's ground truth under another name
   const char* serialPath = nullptr;
   int baud = 115200;
   const char* outPath = nullptr;
@@ -56,7 +57,7 @@ struct AppOptions {
   const char* videoPath = nullptr;          // --video FILE.avi: every frame with its track
   // The texts as read: the pointers above point into them (nullptr: not given).
   struct Texts {
-    std::string source, serial, out, preset, mavlinkUdp, mavlinkKey, snapshot, video;
+    std::string source, serial, out, preset, mavlinkUdp, mavlinkKey, snapshot, video, gt;
   } texts;
 };
 

@@ -1,6 +1,7 @@
 // Before anything is opened: no output of cuetrack (--out, --video, --snapshot) may
-// overwrite an input (the --source file or folder, a video's ground truth, the stills of a
-// pan:/still: source) or another output. False with one line in err naming both paths.
+// overwrite an input (the --source file or folder, a video's ground truth, --gt, the stills of a
+// pan:/still: source, the --mavlink-key) or another output (apps/common OutputGuard). False
+// with one line in err naming both paths.
 #pragma once
 
 #include <cstddef>

@@ -132,19 +132,28 @@ bool Pipeline::startFromOptions(const Frame& frame, Box* initBox, bool* rejected
     return true;
   }
   // Either ends the run: without it nothing would be tracked, ever.
-  char line[512];
+  char line[640];
   const Box said = _slot.scale.toSource(box);  // as the user or the file gave it
+  // A frame scaled down for the tracker scales the box too: say what the tracker saw.
+  const int sourceW = _slot.scale.sourceWidth(frame.rgb.width);
+  const int sourceH = _slot.scale.sourceHeight(frame.rgb.height);
+  char image[160];
+  if (sourceW != frame.rgb.width)
+    std::snprintf(image, sizeof image,
+                  "the image is %dx%d, scaled down to %dx%d for the tracker, where the box is "
+                  "%.1fx%.1f px; give a larger box",
+                  sourceW, sourceH, frame.rgb.width, frame.rgb.height, static_cast<double>(box.w),
+                  static_cast<double>(box.h));
+  else
+    std::snprintf(image, sizeof image, "the image is %dx%d", sourceW, sourceH);
   if (_options.hasBox) {
-    std::snprintf(line, sizeof line,
-                  "--box %g,%g,%g,%g refused by the tracker: %s (the image is %dx%d)", said.x,
-                  said.y, said.w, said.h, why, _slot.scale.sourceWidth(frame.rgb.width),
-                  _slot.scale.sourceHeight(frame.rgb.height));
+    std::snprintf(line, sizeof line, "--box %g,%g,%g,%g refused by the tracker: %s (%s)", said.x,
+                  said.y, said.w, said.h, why, image);
   } else {
     std::snprintf(line, sizeof line,
-                  "%s: frame %d: box %g,%g,%g,%g refused by the tracker: %s (the image is %dx%d)",
+                  "%s: frame %d: box %g,%g,%g,%g refused by the tracker: %s (%s)",
                   _options.groundTruthName ? _options.groundTruthName : "ground truth", _slot.index,
-                  said.x, said.y, said.w, said.h, why, _slot.scale.sourceWidth(frame.rgb.width),
-                  _slot.scale.sourceHeight(frame.rgb.height));
+                  said.x, said.y, said.w, said.h, why, image);
   }
   _reporter.report(line);
   *rejected = true;

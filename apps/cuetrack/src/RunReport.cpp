@@ -31,8 +31,9 @@ void describeTarget(const AppOptions& opt, const char* groundTruthName, bool gro
   }
 }
 
-// The link's counters in one clause, e.g. "serial sent 10 tx-dropped 0 rx 2 ...".
-// MAVLink's discarded bytes are split by reason after rx-errors (docs/mavlink.md).
+// The link's counters at the end in one clause, e.g. "serial sent 10 tx-dropped 0 rx 2 ...":
+// what is still queued then never reaches the peer, so it counts as dropped. MAVLink's
+// discarded bytes are split by reason after rx-errors (docs/mavlink.md).
 int formatLinkStats(const char* name, const platform::LinkStats& s, char* out, size_t n) {
   char why[96] = "";
   if (s.rxBadCrc + s.rxBadLength + s.rxBadUnknown > 0)
@@ -40,7 +41,7 @@ int formatLinkStats(const char* name, const platform::LinkStats& s, char* out, s
                   static_cast<unsigned>(s.rxBadCrc), static_cast<unsigned>(s.rxBadLength),
                   static_cast<unsigned>(s.rxBadUnknown));
   return std::snprintf(out, n, "%s sent %u tx-dropped %u rx %u rx-errors %u%s refused %u", name,
-                       static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped),
+                       static_cast<unsigned>(s.sent), static_cast<unsigned>(s.txDropped + s.queued),
                        static_cast<unsigned>(s.rxFrames), static_cast<unsigned>(s.rxErrors), why,
                        static_cast<unsigned>(s.rxRefused));
 }
@@ -76,11 +77,19 @@ void printSummary(const AppOptions& opt, const char* program, const Pipeline& pi
   const char* name = linkName(opt);
   const StepResult r = end.result;
   if (opt.quiet) {
+    // Losses: frames the target was given but not tracked (lost or hidden), frames skipped,
+    // messages the link dropped.
+    const uint32_t untracked = summary.frames() - summary.tracked() - summary.idle();
+    if (untracked > 0) {
+      std::snprintf(err, sizeof err, "target not tracked on %u of %u frames (lost or hidden)",
+                    untracked, summary.frames() - summary.idle());
+      reporter.report(err);
+    }
     if (source.skippedFrames() > 0) {
       std::snprintf(err, sizeof err, "%d damaged frames skipped", source.skippedFrames());
       reporter.report(err);
     }
-    if (link && (link->stats().txDropped > 0 || link->stats().rxErrors > 0 ||
+    if (link && (link->stats().txDropped + link->stats().queued > 0 || link->stats().rxErrors > 0 ||
                  link->stats().rxRefused > 0)) {
       formatLinkStats(name, link->stats(), err, sizeof err);
       reporter.report(err);
@@ -106,7 +115,15 @@ void printSummary(const AppOptions& opt, const char* program, const Pipeline& pi
       formatLinkStats(name, link->stats(), err + n, sizeof err - static_cast<size_t>(n));
   }
   if (failed) {  // the error line said why; this says how far it got, if anywhere
-    if (pipeline.frames() > 0) reporter.report(err);
+    if (pipeline.frames() == 0) return;
+    reporter.report(err);
+    if (r != StepResult::SourceError) return;
+    summary.format(end.runUs, err, sizeof err);  // what was tracked before it broke
+    reporter.report(err);
+    if (!opt.skipBadFrames && source.skippedFrames() == 0)
+      reporter.report(
+          "next: a recording damaged or cut short mid-way: --skip-bad-frames skips its bad "
+          "frames (counted) and goes on to the end");
     return;
   }
   reporter.report(err);

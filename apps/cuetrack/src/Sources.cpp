@@ -1,5 +1,7 @@
 #include "Sources.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -23,10 +25,13 @@ char gDefaultSpec[160] = "";  // and what, as --source would name it (empty: syn
 // so there it opens fakenect recordings only (and says so for other formats). One
 // allocation, at start.
 FrameSource* openThroughFactory(const char* spec, uint64_t seed, bool skipBadFrames, char* err,
-                                size_t errLen) {
+                                size_t errLen, const char* gtPath = nullptr,
+                                bool gtOptional = false) {
   SourceOptions options;
   options.seed = seed;
   options.skipBadFrames = skipBadFrames;
+  options.gtPath = gtPath;
+  options.groundTruthOptional = gtOptional;
   static std::unique_ptr<FrameSource> recorded;
   recorded = openFrameSource(spec, options, err, errLen);
   return recorded.get();
@@ -79,7 +84,7 @@ FrameSource* openKinect(KinectStreams streams, char* err, size_t errLen) {
 }  // namespace
 
 FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, size_t errLen,
-                        bool skipBadFrames) {
+                        bool skipBadFrames, const char* gtPath, bool gtOptional) {
   if (spec == nullptr) {
 #if defined(CUETRACK_HAVE_KINECT)
     char why[160] = "";
@@ -119,7 +124,7 @@ FrameSource* openSource(const char* spec, uint64_t seed, int frames, char* err, 
   if (std::strncmp(spec, "synth:", 6) == 0 && !std::strchr(spec + 6, ':')) {
     return openSynth(spec + 6, seed, frames, err, errLen);
   }
-  return openThroughFactory(spec, seed, skipBadFrames, err, errLen);
+  return openThroughFactory(spec, seed, skipBadFrames, err, errLen, gtPath, gtOptional);
 }
 
 void describeSourceChoice(const char* spec, char* out, size_t outLen) {
@@ -138,7 +143,11 @@ bool kinectSupported() {
 #endif
 }
 
-void describeGroundTruth(const char* spec, char* out, size_t outLen) {
+void describeGroundTruth(const char* spec, char* out, size_t outLen, const char* gtPath) {
+  if (gtPath) {
+    std::snprintf(out, outLen, "%s", gtPath);
+    return;
+  }
   if (!spec && gDefaultSpec[0] != '\0') spec = gDefaultSpec;  // the default chose a camera
   if (!spec || std::strncmp(spec, "kinect", 6) == 0 || std::strncmp(spec, "synth", 5) == 0 ||
       std::strncmp(spec, "pan:", 4) == 0 || std::strncmp(spec, "still:", 6) == 0 ||
@@ -155,15 +164,16 @@ void describeGroundTruth(const char* spec, char* out, size_t outLen) {
     std::snprintf(out, outLen, "%s", rec::videoGroundTruthPath(spec).c_str());
     return;
   }
-  // A folder: OTB folders have groundtruth_rect.txt, fakenect and RGB-D groundtruth.txt.
+  // A folder: fakenect (INDEX.txt) and RGB-D (rgb/) folders read groundtruth.txt, OTB
+  // (img/) and image folders groundtruth_rect.txt: the file the reader looks for.
   int dirLen = static_cast<int>(n);
   while (dirLen > 1 && spec[dirLen - 1] == '/') --dirLen;
-  std::snprintf(out, outLen, "%.*s/groundtruth_rect.txt", dirLen, spec);
-  if (FILE* f = std::fopen(out, "rb")) {
-    std::fclose(f);
-    return;
-  }
-  std::snprintf(out, outLen, "%.*s/groundtruth.txt", dirLen, spec);
+  std::snprintf(out, outLen, "%.*s/INDEX.txt", dirLen, spec);
+  const bool fakenect = ::access(out, F_OK) == 0;
+  std::snprintf(out, outLen, "%.*s/rgb", dirLen, spec);
+  const bool rgbd = ::access(out, F_OK) == 0;
+  std::snprintf(out, outLen, "%.*s/%s", dirLen, spec,
+                fakenect || rgbd ? "groundtruth.txt" : "groundtruth_rect.txt");
 }
 
 uint64_t droppedFrames(const FrameSource& source) {

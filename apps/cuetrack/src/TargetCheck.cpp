@@ -119,7 +119,9 @@ TargetCheck checkTarget(const Frame& frame, const Box& box) {
   }
   if (!standsOutInDepth) {
     if (out.gradientPerPx < kMinGradientPerPx) out.issues |= kTargetLowTexture;
-    if (out.surroundSimilarity > kMaxSurroundSimilarity) out.issues |= kTargetLikeSurroundings;
+    if (out.surroundSimilarity > kMaxSurroundSimilarity &&
+        out.gradientPerPx < kMaxGradientLikeSurroundings)
+      out.issues |= kTargetLikeSurroundings;
   }
 
   if (depth) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "cuetrack/cli/Command.hpp"
+#include "cuetrack/cli/OutputGuard.hpp"
 #include "cuetrack/cli/Values.hpp"
 #include "cuetrack/platform/CommandText.hpp"
 
@@ -96,6 +97,18 @@ ListenParse parseListenOptions(int argc, char** argv, ListenOptions* o, char* er
   o->csvPath = cmd.given("--csv") ? o->csv.c_str() : nullptr;
   o->statePath = cmd.given("--state") ? o->state.c_str() : nullptr;
   o->numSends = static_cast<int>(o->sendTexts.size());
+  // The one output guard of every tool: the CSV and the state file are neither the port
+  // (a regular file given as PORT) nor each other.
+  cli::OutputGuard guard;
+  guard.input("PORT", o->port);
+  if (o->csvPath) guard.output("--csv", o->csvPath);
+  if (o->statePath) guard.output("--state", o->statePath);
+  if (o->statePath) guard.output("--state's temporary file", o->state + ".tmp");
+  std::string clash;
+  if (!guard.check(&clash)) {
+    std::snprintf(err, errLen, "%s", clash.c_str());
+    return ListenParse::Error;
+  }
   // Every command is checked before the port is touched.
   for (int i = 0; i < o->numSends; ++i) {
     o->sends[i] = o->sendTexts[static_cast<size_t>(i)].c_str();

@@ -83,9 +83,234 @@ bool writeState(const char* path, uint32_t lastSeq, char* err, size_t errLen) {
   return ok;
 }
 
+// One listening session: the port, the outputs and the loop, each a step.
+class Session {
+ public:
+  Session(const listen::ListenOptions& opt, platform::SerialPort& port,
+          platform::StderrReporter& problems)
+      : _opt(opt), _port(port), _problems(problems) {}
+
+  // The port, waited for when it is not there yet: false after its line.
+  bool openPort();
+  // --csv or stdout: false after its line.
+  bool openTracks();
+  // The loop, until a stop, --tracks, the idle timeout or a failure; what main returns,
+  // after the summary line.
+  int run();
+  // Stopped while waiting for the port: the summary line (nothing received), exit 0.
+  bool interrupted() const { return platform::stopRequested(); }
+  int summaryOnly();
+
+ private:
+  bool resume(listen::Listener& listener);
+  bool saveState(const listen::Listener& listener);
+  bool waitForReturn(listen::Listener& listener);
+  bool sendCommands(listen::Listener& listener);
+  // One poll: false when the loop ends (why and _code set).
+  bool step(listen::Listener& listener, platform::LineReporter& messages);
+  void summary(const listen::Listener& listener);
+
+  const listen::ListenOptions& _opt;
+  platform::SerialPort& _port;
+  platform::StderrReporter& _problems;
+  platform::FdTrackSink _tracks;
+  platform::MonotonicClock _clock;
+  char _err[768] = "";
+  uint64_t _lastRxUs = 0, _stateWrittenUs = 0;
+  uint32_t _stateSeq = 0;
+  bool _sent = false;
+  int _code = 0;
+  const char* _why = "interrupted";
+};
+
+bool Session::openPort() {
+  const uint64_t startUs = _clock.nowUs();
+  const bool waited = waitForPort(_opt.portPath, _opt.waitPortS, _problems);
+  if (platform::stopRequested()) return false;  // the caller ends with the summary
+  if (!_port.open(_opt.portPath, static_cast<int>(_opt.baud))) {
+    if (waited) {
+      const double waitedS = static_cast<double>(_clock.nowUs() - startUs) / 1e6;
+      std::snprintf(_err, sizeof _err, "%s (waited %.0f s for it; --wait-port SECONDS)",
+                    _port.error(), waitedS);
+      _problems.report(_err);
+    } else {
+      _problems.report(_port.error());
+    }
+    return false;
+  }
+  if (_port.notice()[0] != '\0') _problems.report(_port.notice());  // a stale lock replaced
+  std::snprintf(_err, sizeof _err, "%s: listening at %ld baud", _opt.portPath, _opt.baud);
+  _problems.report(_err);
+  return true;
+}
+
+bool Session::openTracks() {
+  if (!_opt.csvPath) {
+    _tracks.attachStdout(platform::TextFormat::Line);
+    return true;
+  }
+  if (_tracks.openFile(_opt.csvPath, platform::TextFormat::Csv)) return true;
+  _problems.report(_tracks.error());
+  return false;
+}
+
+// --state: go on after the last run's seq.
+bool Session::resume(listen::Listener& listener) {
+  uint32_t savedSeq = 0;
+  _err[0] = '\0';
+  if (_opt.statePath && readState(_opt.statePath, &savedSeq, _err, sizeof _err)) {
+    listener.resumeAfter(savedSeq);
+    std::snprintf(_err, sizeof _err, "%s: the last run ended after seq %u", _opt.statePath,
+                  savedSeq);
+    _problems.report(_err);
+  } else if (_opt.statePath && _err[0]) {
+    _problems.report(_err);  // a damaged state file: say so, start afresh
+  }
+  _stateSeq = savedSeq;
+  return true;
+}
+
+bool Session::saveState(const listen::Listener& listener) {
+  const listen::SeqCounter& q = listener.seq();
+  if (!_opt.statePath || !q.any() || (q.last() == _stateSeq && _stateWrittenUs != 0)) return true;
+  _stateSeq = q.last();
+  _stateWrittenUs = _clock.nowUs();
+  return writeState(_opt.statePath, _stateSeq, _err, sizeof _err);
+}
+
+// --reconnect: the port went away; waits for it. False when stopped while waiting.
+bool Session::waitForReturn(listen::Listener& listener) {
+  std::snprintf(_err, sizeof _err, "%s: the port went away (%s); waiting for it", _opt.portPath,
+                _port.error());
+  _problems.report(_err);
+  _port.close();
+  uint64_t triedUs = 0;
+  while (!platform::stopRequested() && !_port.isOpen()) {
+    const uint64_t now = _clock.nowUs();
+    if (triedUs == 0 || now - triedUs >= kReopenPeriodUs) {
+      triedUs = now;
+      if (_port.open(_opt.portPath, static_cast<int>(_opt.baud))) break;
+    }
+    usleep(50000);  // a slice of the wait, not a synchronisation
+  }
+  if (!_port.isOpen()) return false;  // interrupted while waiting
+  std::snprintf(_err, sizeof _err, "%s: the port is back", _opt.portPath);
+  _problems.report(_err);
+  listener.noteReconnect();
+  _lastRxUs = _clock.nowUs();
+  return true;
+}
+
+// The --send commands, once the device is up and reading (it flushes its input when it
+// opens the port). False after its line when one cannot be sent.
+bool Session::sendCommands(listen::Listener& listener) {
+  const listen::ListenStats& st = listener.stats();
+  if (_sent || st.tracks + st.heartbeats + st.acks + st.errors == 0) return true;
+  _sent = true;
+  for (int i = 0; i < _opt.numSends; ++i) {
+    if (!listener.send(_opt.commands[i])) {
+      std::snprintf(_err, sizeof _err, "%s: cannot send '%s': %s", _opt.portPath, _opt.sends[i],
+                    _port.error());
+      _problems.report(_err);
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Session::step(listen::Listener& listener, platform::LineReporter& messages) {
+  bool received = false;
+  const listen::PollResult r = listener.poll(100, &received);
+  if (r == listen::PollResult::Closed && !_opt.reconnect) {
+    std::snprintf(_err, sizeof _err, "%s: the port went away (%s); --reconnect waits for it",
+                  _opt.portPath, _port.error());
+    _problems.report(_err);
+    _why = "port went away";
+    _code = kExitPort;
+    return false;
+  }
+  if (r == listen::PollResult::Closed) return waitForReturn(listener);
+  if (r == listen::PollResult::OutputFailed || messages.failed()) {
+    const bool csv = _opt.csvPath != nullptr;
+    _why = messages.failed()
+               ? (csv ? "message (stderr) write failed" : "message (stdout) write failed")
+           : csv ? "CSV write failed"
+                 : "track output (stdout) write failed";
+    _code = kExitOutput;
+    return false;
+  }
+  if (received) _lastRxUs = _clock.nowUs();
+  if (_clock.nowUs() - _stateWrittenUs >= kStatePeriodUs && !saveState(listener)) {
+    _problems.report(_err);
+    _why = "state file write failed";
+    _code = kExitOutput;
+    return false;
+  }
+  if (!sendCommands(listener)) {
+    _why = "a --send failed";
+    _code = kExitPort;
+    return false;
+  }
+  if (_opt.maxTracks >= 0 && listener.stats().tracks >= static_cast<uint32_t>(_opt.maxTracks)) {
+    _why = "--tracks reached";
+    return false;
+  }
+  if (_opt.idleS > 0 && _clock.nowUs() - _lastRxUs > static_cast<uint64_t>(_opt.idleS) * 1000000u) {
+    _why = "idle timeout";
+    _code = kExitIdle;
+    return false;
+  }
+  return true;
+}
+
+void Session::summary(const listen::Listener& listener) {
+  const listen::ListenStats& s = listener.stats();
+  const ctp_stats_t& d = listener.decoderStats();
+  const listen::SeqCounter& q = listener.seq();
+  int n = std::snprintf(
+      _err, sizeof _err,
+      "%s: %u tracks, %u heartbeats, %u acks, %u errors; rejected %u (crc %u, framing %u, "
+      "overlong %u, version %u); seq gaps %u",
+      _why, s.tracks, s.heartbeats, s.acks, s.errors, s.rejected, d.crc, d.framing, d.overlong,
+      d.version, s.seqGaps);
+  if (q.any() && n > 0 && static_cast<size_t>(n) < sizeof _err)
+    n += std::snprintf(_err + n, sizeof _err - static_cast<size_t>(n),
+                       " (seq first %u last %u, device restarts %u)", q.first(), q.last(),
+                       q.restarts());
+  _problems.report(_err);
+}
+
+int Session::summaryOnly() {
+  static platform::FdTrackSink none;
+  platform::LineReporter messages(platform::StdStream::Err);
+  listen::Listener listener(_port, none, messages, _problems);
+  summary(listener);
+  return 0;
+}
+
+int Session::run() {
+  // With --csv, stdout may carry the CSV itself: other messages go to stderr.
+  platform::LineReporter messages(_opt.csvPath ? platform::StdStream::Err
+                                               : platform::StdStream::Out);
+  listen::Listener listener(_port, _tracks, messages, _problems);
+  resume(listener);
+  _lastRxUs = _clock.nowUs();
+  _sent = _opt.numSends == 0;
+  while (!platform::stopRequested() && step(listener, messages)) {
+  }
+  _stateWrittenUs = 0;  // the last seq, whatever the period
+  if (!saveState(listener)) {
+    _problems.report(_err);
+    if (_code == 0) _code = kExitOutput;
+  }
+  summary(listener);
+  return _code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  platform::installStopSignals();  // first: a stop at any moment ends with the summary, exit 0
   platform::StderrReporter problems("cuetrack-listen");
   char err[768];
   static listen::ListenOptions opt;  // static: 32 parsed commands
@@ -99,153 +324,9 @@ int main(int argc, char** argv) {
     case listen::ListenParse::Run:
       break;
   }
-  const char* portPath = opt.portPath;
-  const char* csvPath = opt.csvPath;
-  const char* statePath = opt.statePath;
-  const bool reconnect = opt.reconnect;
-  const long baud = opt.baud, maxTracks = opt.maxTracks, idleS = opt.idleS;
-  const char* const* sends = opt.sends;
-  const ctp_command_t* commands = opt.commands;
-  const int numSends = opt.numSends;
-
-  platform::installStopSignals();
   static platform::SerialPort port;
-  const bool waited = waitForPort(portPath, opt.waitPortS, problems);
-  if (!port.open(portPath, static_cast<int>(baud))) {
-    if (waited) {
-      std::snprintf(err, sizeof err, "%s (waited %ld s for it; --wait-port SECONDS)", port.error(),
-                    opt.waitPortS);
-      problems.report(err);
-    } else {
-      problems.report(port.error());
-    }
-    return kExitPort;
-  }
-  if (port.notice()[0] != '\0') problems.report(port.notice());  // a stale lock replaced
-  std::snprintf(err, sizeof err, "%s: listening at %ld baud", portPath, baud);
-  problems.report(err);
-  static platform::FdTrackSink tracks;
-  if (csvPath) {
-    if (!tracks.openFile(csvPath, platform::TextFormat::Csv)) {
-      problems.report(tracks.error());
-      return kExitOutput;
-    }
-  } else {
-    tracks.attachStdout(platform::TextFormat::Line);
-  }
-  // With --csv, stdout may carry the CSV itself: other messages go to stderr.
-  platform::LineReporter messages(csvPath ? platform::StdStream::Err : platform::StdStream::Out);
-  listen::Listener listener(port, tracks, messages, problems);
-  uint32_t savedSeq = 0;
-  if (statePath && readState(statePath, &savedSeq, err, sizeof err)) {
-    listener.resumeAfter(savedSeq);
-    std::snprintf(err, sizeof err, "%s: the last run ended after seq %u", statePath, savedSeq);
-    problems.report(err);
-  } else if (statePath && err[0]) {
-    problems.report(err);  // a damaged state file: say so, start afresh
-  }
-
-  platform::MonotonicClock clock;
-  uint64_t lastRxUs = clock.nowUs(), stateWrittenUs = 0;
-  uint32_t stateSeq = savedSeq;
-  int code = 0;
-  const char* why = "interrupted";
-  bool sent = numSends == 0;
-  auto saveState = [&]() {
-    const listen::SeqCounter& q = listener.seq();
-    if (!statePath || !q.any() || (q.last() == stateSeq && stateWrittenUs != 0)) return true;
-    stateSeq = q.last();
-    stateWrittenUs = clock.nowUs();
-    return writeState(statePath, stateSeq, err, sizeof err);
-  };
-  while (!platform::stopRequested()) {
-    bool received = false;
-    const listen::PollResult r = listener.poll(100, &received);
-    if (r == listen::PollResult::Closed && !reconnect) {
-      std::snprintf(err, sizeof err, "%s: the port went away (%s); --reconnect waits for it",
-                    portPath, port.error());
-      problems.report(err);
-      why = "port went away";
-      code = kExitPort;
-      break;
-    }
-    if (r == listen::PollResult::Closed) {
-      std::snprintf(err, sizeof err, "%s: the port went away (%s); waiting for it", portPath,
-                    port.error());
-      problems.report(err);
-      port.close();
-      uint64_t triedUs = 0;
-      while (!platform::stopRequested() && !port.isOpen()) {
-        const uint64_t now = clock.nowUs();
-        if (triedUs == 0 || now - triedUs >= kReopenPeriodUs) {
-          triedUs = now;
-          if (port.open(portPath, static_cast<int>(baud))) break;
-        }
-        usleep(50000);  // a slice of the wait, not a synchronisation
-      }
-      if (!port.isOpen()) break;  // interrupted while waiting
-      std::snprintf(err, sizeof err, "%s: the port is back", portPath);
-      problems.report(err);
-      listener.noteReconnect();
-      lastRxUs = clock.nowUs();
-      continue;
-    }
-    if (r == listen::PollResult::OutputFailed || messages.failed()) {
-      why = messages.failed()
-                ? (csvPath ? "message (stderr) write failed" : "message (stdout) write failed")
-            : csvPath ? "CSV write failed"
-                      : "track output (stdout) write failed";
-      code = kExitOutput;
-      break;
-    }
-    if (received) lastRxUs = clock.nowUs();
-    if (clock.nowUs() - stateWrittenUs >= kStatePeriodUs && !saveState()) {
-      problems.report(err);
-      why = "state file write failed";
-      code = kExitOutput;
-      break;
-    }
-    const listen::ListenStats& st = listener.stats();
-    if (!sent && st.tracks + st.heartbeats + st.acks + st.errors > 0) {
-      // The device is up and reading (it flushes its input when it opens the port).
-      sent = true;
-      for (int i = 0; i < numSends; ++i) {
-        if (!listener.send(commands[i])) {
-          std::snprintf(err, sizeof err, "%s: cannot send '%s': %s", portPath, sends[i],
-                        port.error());
-          problems.report(err);
-          return kExitPort;
-        }
-      }
-    }
-    if (maxTracks >= 0 && listener.stats().tracks >= static_cast<uint32_t>(maxTracks)) {
-      why = "--tracks reached";
-      break;
-    }
-    if (idleS > 0 && clock.nowUs() - lastRxUs > static_cast<uint64_t>(idleS) * 1000000u) {
-      why = "idle timeout";
-      code = kExitIdle;
-      break;
-    }
-  }
-  stateWrittenUs = 0;  // the last seq, whatever the period
-  if (!saveState()) {
-    problems.report(err);
-    if (code == 0) code = kExitOutput;
-  }
-  const listen::ListenStats& s = listener.stats();
-  const ctp_stats_t& d = listener.decoderStats();
-  const listen::SeqCounter& q = listener.seq();
-  int n = std::snprintf(
-      err, sizeof err,
-      "%s: %u tracks, %u heartbeats, %u acks, %u errors; rejected %u (crc %u, framing %u, "
-      "overlong %u, version %u); seq gaps %u",
-      why, s.tracks, s.heartbeats, s.acks, s.errors, s.rejected, d.crc, d.framing, d.overlong,
-      d.version, s.seqGaps);
-  if (q.any() && n > 0 && static_cast<size_t>(n) < sizeof err)
-    n += std::snprintf(err + n, sizeof err - static_cast<size_t>(n),
-                       " (seq first %u last %u, device restarts %u)", q.first(), q.last(),
-                       q.restarts());
-  problems.report(err);
-  return code;
+  static Session session(opt, port, problems);
+  if (!session.openPort()) return session.interrupted() ? session.summaryOnly() : kExitPort;
+  if (!session.openTracks()) return kExitOutput;
+  return session.run();
 }

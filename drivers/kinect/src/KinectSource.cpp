@@ -208,6 +208,16 @@ bool KinectSource::open(const KinectOptions& options) {
     std::snprintf(_name, sizeof _name, "kinect#%d", options.deviceIndex);
   if (_replay) std::snprintf(_name, sizeof _name, "fakenect");
 
+  if (!checkOptions(options)) return false;
+  if (_replay && !checkReplay()) return false;
+  for (int r = 0; r < 2048; ++r) _rawToMm[r] = kinect::rawToMm(static_cast<uint16_t>(r));
+  if (!openDevice(options)) return false;
+  resetPairer(options);
+  freenect_set_user(_dev, this);
+  return setModes(options) && startStreams();
+}
+
+bool KinectSource::checkOptions(const KinectOptions& options) {
   if (options.rateDivisor < 1)
     return fail("%s: rate divisor must be >= 1 (got %d)", _name, options.rateDivisor);
   if (options.setTilt && (options.tiltDeg < -27.f || options.tiltDeg > 27.f))
@@ -220,23 +230,25 @@ bool KinectSource::open(const KinectOptions& options) {
   if (_replay && depthMode == KinectDepthMode::Registered)
     return fail("fakenect: the replay library serves raw 11-bit depth only (use raw depth)");
   _registered = depthMode == KinectDepthMode::Registered;
+  return true;
+}
 
-  if (_replay) {
-    // fakenect calls exit(1) on these; catch them here with a clear line instead.
-    const char* path = std::getenv("FAKENECT_PATH");
-    if (!path || !path[0])
-      return fail("fakenect: FAKENECT_PATH is not set (it names the recording to replay)");
-    char index[1024];
-    std::snprintf(index, sizeof index, "%s/INDEX.txt", path);
-    FILE* f = std::fopen(index, "rb");
-    if (!f) return fail("%s: cannot open (FAKENECT_PATH must name a fakenect recording)", index);
-    std::fclose(f);
-    char why[sizeof _error];
-    if (!checkFakenectReplayable(path, why, sizeof why)) return fail("fakenect: %s", why);
-  }
+bool KinectSource::checkReplay() {
+  // fakenect calls exit(1) on these; catch them here with a clear line instead.
+  const char* path = std::getenv("FAKENECT_PATH");
+  if (!path || !path[0])
+    return fail("fakenect: FAKENECT_PATH is not set (it names the recording to replay)");
+  char index[1024];
+  std::snprintf(index, sizeof index, "%s/INDEX.txt", path);
+  FILE* f = std::fopen(index, "rb");
+  if (!f) return fail("%s: cannot open (FAKENECT_PATH must name a fakenect recording)", index);
+  std::fclose(f);
+  char why[sizeof _error];
+  if (!checkFakenectReplayable(path, why, sizeof why)) return fail("fakenect: %s", why);
+  return true;
+}
 
-  for (int r = 0; r < 2048; ++r) _rawToMm[r] = kinect::rawToMm(static_cast<uint16_t>(r));
-
+bool KinectSource::openDevice(const KinectOptions& options) {
   const bool motor = options.setTilt || options.led != KinectLed::Unchanged;
   int r = openContext(&_ctx, motor);
   if (r < 0) {
@@ -256,19 +268,22 @@ bool KinectSource::open(const KinectOptions& options) {
           "permission (udev rule, docs/kinect.md)",
           _name, r);
     }
-  } else {
-    if (options.deviceIndex < 0 || options.deviceIndex >= n)
-      return fail("%s: no such device (%d Kinect%s found)", _name, n, n == 1 ? "" : "s");
-    r = freenect_open_device(_ctx, &_dev, options.deviceIndex);
-    if (r < 0) {
-      _dev = nullptr;
-      return fail(
-          "%s: cannot open the Kinect (%d): in use by another program, or no permission "
-          "(udev rule, docs/kinect.md)",
-          _name, r);
-    }
+    return true;
   }
+  if (options.deviceIndex < 0 || options.deviceIndex >= n)
+    return fail("%s: no such device (%d Kinect%s found)", _name, n, n == 1 ? "" : "s");
+  r = freenect_open_device(_ctx, &_dev, options.deviceIndex);
+  if (r < 0) {
+    _dev = nullptr;
+    return fail(
+        "%s: cannot open the Kinect (%d): in use by another program, or no permission "
+        "(udev rule, docs/kinect.md)",
+        _name, r);
+  }
+  return true;
+}
 
+void KinectSource::resetPairer(const KinectOptions& options) {
   kinect::PairerConfig pc;
   pc.useColour = _colourOn;
   pc.useDepth = _depthOn;
@@ -282,8 +297,9 @@ bool KinectSource::open(const KinectOptions& options) {
   pc.policy = delivery == KinectDelivery::Lossless ? kinect::DropPolicy::Lossless
                                                    : kinect::DropPolicy::Latest;
   _pairer.reset(pc);
+}
 
-  freenect_set_user(_dev, this);
+bool KinectSource::setModes(const KinectOptions& options) {
   if (_depthOn) {
     const freenect_frame_mode mode = freenect_find_depth_mode(
         FREENECT_RESOLUTION_MEDIUM, _registered ? FREENECT_DEPTH_REGISTERED : FREENECT_DEPTH_11BIT);
@@ -305,7 +321,11 @@ bool KinectSource::open(const KinectOptions& options) {
     std::fprintf(stderr, "%s: warning: cannot set the LED (motor subdevice missing?)\n", _name);
   if (options.setTilt && freenect_set_tilt_degs(_dev, options.tiltDeg) < 0)
     std::fprintf(stderr, "%s: warning: cannot set the tilt (motor subdevice missing?)\n", _name);
+  return true;
+}
 
+bool KinectSource::startStreams() {
+  int r = 0;
   if (_depthOn && (r = freenect_start_depth(_dev)) < 0)
     return fail("%s: cannot start the depth stream (%d)", _name, r);
   if (_colourOn && (r = freenect_start_video(_dev)) < 0)

@@ -70,8 +70,14 @@ bool BobotVideoReader::open(const char* videoPath, const SourceOptions& opt) {
   }
   hookFfmpegLog();
   if (!_video->cap.open(_path, cv::CAP_FFMPEG) || !_video->cap.isOpened()) {
-    std::snprintf(_error, sizeof _error, "%s: cannot open video (not a format OpenCV decodes)",
-                  videoPath);
+    // The extension named a video: the file is what is wrong, not the format.
+    if (rec::fileSize(videoPath) == 0)
+      std::snprintf(_error, sizeof _error, "%s: empty file (0 bytes): no video to read", videoPath);
+    else
+      std::snprintf(_error, sizeof _error,
+                    "%s: cannot open video: no stream to decode (the file is cut short, damaged "
+                    "or holds no video track; ffprobe %s shows what it holds)",
+                    videoPath, videoPath);
     return false;
   }
   const double n = _video->cap.get(cv::CAP_PROP_FRAME_COUNT);

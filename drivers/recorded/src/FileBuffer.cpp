@@ -86,6 +86,11 @@ bool isFile(const char* path) {
   return ::stat(path, &st) == 0 && S_ISREG(st.st_mode);
 }
 
+long long fileSize(const char* path) {
+  struct stat st {};
+  return ::stat(path, &st) == 0 ? static_cast<long long>(st.st_size) : -1;
+}
+
 bool pathTooLong(const char* path, char* err, size_t errLen) {
   const size_t n = std::strlen(path);
   if (n <= kMaxPathChars) return false;

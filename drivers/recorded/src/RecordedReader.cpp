@@ -19,18 +19,24 @@ void RecordedReader::restart(const SourceOptions& opt) {
   _next = _emitted = _skipped = 0;
   _width = _height = 0;
   _error[0] = '\0';
+  _warning[0] = '\0';
 }
 
 bool RecordedReader::loadGroundTruth(const std::string& besidePath, GtFormat format, int frames,
                                      const char* framesNoun) {
   const std::string path = _opt.gtPath ? std::string(_opt.gtPath) : besidePath;
   if (!_opt.gtPath && !rec::exists(path.c_str())) return true;
-  if (!_gt.load(path.c_str(), format, _error, sizeof _error)) return false;
-  if (frames > 0 && _gt.count() != frames && _gt.count() != frames - 1) {
+  bool ok = _gt.load(path.c_str(), format, _error, sizeof _error);
+  if (ok && frames > 0 && _gt.count() != frames && _gt.count() != frames - 1) {
     std::snprintf(_error, sizeof _error, "%s: %d ground-truth boxes for %d %s", path.c_str(),
                   _gt.count(), frames, framesNoun);
-    return false;
+    ok = false;
   }
+  if (ok || !_opt.groundTruthOptional || _opt.gtPath) return ok;
+  // Not needed for the target: a file of another kind beside the video is no reason to stop.
+  std::snprintf(_warning, sizeof _warning, "%.600s; not used as ground truth (no score)", _error);
+  _error[0] = '\0';
+  _gt = GroundTruth{};
   return true;
 }
 

@@ -357,6 +357,28 @@ bool makeScene(const char* name, SceneSpec* out, char* err, size_t errLen) {
   return false;
 }
 
+bool knownSceneSource(const char* spec, char* err, size_t errLen) {
+  if (spec == nullptr) return true;
+  const char* at = nullptr;
+  size_t len = 0;
+  if (std::strncmp(spec, "synth:", 6) == 0) {
+    at = spec + 6;
+    len = std::strcspn(at, ":");
+  } else if (std::strncmp(spec, "still:", 6) == 0 && std::strchr(spec + 6, ':')) {
+    at = std::strchr(spec + 6, ':') + 1;  // still:RGB,DEPTH,...:SCENE@PLACE
+    len = std::strcspn(at, "@");
+  } else {
+    return true;
+  }
+  char name[64];
+  std::snprintf(name, sizeof name, "%.*s", static_cast<int>(len), at);
+  static SceneSpec scratch;  // large: not on the stack
+  char why[600];
+  if (makeScene(name, &scratch, why, sizeof why)) return true;
+  std::snprintf(err, errLen, "%s: %s", spec, why);
+  return false;
+}
+
 void listSceneNames(const char* separator, char* out, size_t len) {
   if (len == 0) return;
   out[0] = '\0';

@@ -75,6 +75,129 @@ inline void clipSlab(float a, float b, int slabFace, float* tn, float* tf, int* 
   if (b < *tf) *tf = b;
 }
 
+// One object as the rays see it, in camera coordinates.
+struct RayObject {
+  float X, Y, Z, R, D, yTop, yBot;
+  float yawRad;          // a spinning cylinder's texture turn
+  float cw, sw, ox, oz;  // a yawed box: its yaw and the camera in its frame
+};
+
+// Where a ray (dx, dy, 1) first meets the object: depth t, the surface normal and the
+// texture coordinates (s, q) in mm.
+struct RayHit {
+  float t = -1.f, nx = 0.f, ny = 0.f, nz = -1.f, s = 0.f, q = 0.f;
+};
+
+bool hitCylinder(const RayObject& o, float dx, float dy, RayHit* h) {
+  const float X = o.X, Z = o.Z, R = o.R, yTop = o.yTop, yBot = o.yBot;
+  const float A = dx * dx + 1.f, B = dx * X + Z, C = X * X + Z * Z - R * R;
+  const float disc = B * B - A * C;
+  if (disc < 0.f) return false;
+  const float ts = (B - std::sqrt(disc)) / A;
+  const float ys = ts * dy;
+  if (ys >= yTop && ys <= yBot) {
+    h->t = ts;
+    h->nx = (ts * dx - X) / R;
+    h->nz = (ts - Z) / R;
+    h->ny = 0.f;
+    // A spinning cylinder turns its texture with it (yawRad 0: as ever).
+    h->s = R * (o.yawRad != 0.f ? std::atan2(h->nx, -h->nz) - o.yawRad : std::atan2(h->nx, -h->nz));
+    h->q = ys - yTop;
+    return true;
+  }
+  // The cap facing the camera (top when the camera looks down on it).
+  const float yc = yTop > 0.f ? yTop : (yBot < 0.f ? yBot : 0.f);
+  if (yc == 0.f || dy == 0.f) return false;
+  const float tc = yc / dy;
+  if (tc <= 0.f) return false;
+  const float ex = tc * dx - X, ez = tc - Z;
+  if (ex * ex + ez * ez > R * R) return false;
+  h->t = tc;
+  h->nx = 0.f;
+  h->nz = 0.f;
+  h->ny = yc == yTop ? -1.f : 1.f;
+  h->s = ex;
+  h->q = ez;
+  return true;
+}
+
+// Slabs in the box's frame (the ray parameter is still camera depth); the entry face is
+// the one with the largest near distance.
+bool hitYawedBox(const RayObject& o, float dx, float dy, RayHit* h) {
+  const float R = o.R, D = o.D, yTop = o.yTop, yBot = o.yBot, cw = o.cw, sw = o.sw;
+  const float lx = cw * dx + sw, lz = -sw * dx + cw;  // ray direction, local
+  float tn = -1e30f, tf = 1e30f;
+  int face = 2;
+  auto slab = [&](float o0, float d, float half, int f) {
+    if (d == 0.f) return o0 >= -half && o0 <= half;
+    clipSlab((-half - o0) / d, (half - o0) / d, f, &tn, &tf, &face);
+    return true;
+  };
+  if (!slab(o.oz, lz, D, 2) || !slab(o.ox, lx, R, 0)) return false;
+  if (dy != 0.f) {
+    clipSlab(yTop / dy, yBot / dy, 1, &tn, &tf, &face);
+  } else if (yTop > 0.f || yBot < 0.f) {
+    return false;
+  }
+  if (tn > tf || tn <= 0.f) return false;
+  const float t = tn;
+  h->t = t;
+  const float hx = o.ox + t * lx, hz = o.oz + t * lz, py = t * dy;  // hit point, local
+  float nlx = 0.f, nlz = 0.f;
+  if (face == 0) {
+    nlx = lx > 0.f ? -1.f : 1.f;
+    h->s = hz + D;
+    h->q = py - yTop;
+  } else if (face == 1) {
+    h->ny = dy > 0.f ? -1.f : 1.f;
+    h->s = hx + R;
+    h->q = hz + D;
+  } else {
+    nlz = lz > 0.f ? -1.f : 1.f;
+    h->s = hx + R;
+    h->q = py - yTop;
+  }
+  h->nx = cw * nlx - sw * nlz;  // the normal back in camera coordinates
+  h->nz = sw * nlx + cw * nlz;
+  return true;
+}
+
+// Slabs; the entry face is the one with the largest near distance.
+bool hitBox(const RayObject& o, float dx, float dy, RayHit* h) {
+  const float X = o.X, Z = o.Z, R = o.R, D = o.D, yTop = o.yTop, yBot = o.yBot;
+  float tn = Z - D, tf = Z + D;
+  int face = 2;
+  if (dx != 0.f) {
+    clipSlab((X - R) / dx, (X + R) / dx, 0, &tn, &tf, &face);
+  } else if (X - R > 0.f || X + R < 0.f) {
+    return false;
+  }
+  if (dy != 0.f) {
+    clipSlab(yTop / dy, yBot / dy, 1, &tn, &tf, &face);
+  } else if (yTop > 0.f || yBot < 0.f) {
+    return false;
+  }
+  if (tn > tf || tn <= 0.f) return false;
+  const float t = tn;
+  h->t = t;
+  const float px = t * dx, py = t * dy, pz = t;
+  if (face == 0) {
+    h->nx = dx > 0.f ? -1.f : 1.f;
+    h->nz = 0.f;
+    h->s = pz - (Z - D);
+    h->q = py - yTop;
+  } else if (face == 1) {
+    h->ny = dy > 0.f ? -1.f : 1.f;
+    h->nz = 0.f;
+    h->s = px - (X - R);
+    h->q = pz - (Z - D);
+  } else {
+    h->s = px - (X - R);
+    h->q = py - yTop;
+  }
+  return true;
+}
+
 }  // namespace
 
 namespace synth {
@@ -233,122 +356,30 @@ void SyntheticSource::renderObject(const Posed& p, FrameSlot& out, bool isTarget
   if (ve > _spec.height) ve = _spec.height;
   const Rgb8* tex = _objectTexture[p.index];
   const float invTexel = 1.f / o.texture.texelMm;
-  const float yTop = Y - hh, yBot = Y + hh;
   const uint8_t owner = static_cast<uint8_t>(p.index);
   // Yawed box: the camera (ray origin) in the box's frame, camera -> local being
   // lx = c x + s z, lz = -s x + c z.
   const float cw = p.cosYaw, sw = p.sinYaw;
-  const float ox = -(cw * X + sw * Z), oz = -(-sw * X + cw * Z);
+  const RayObject ray{
+      X, Y, Z, R, D, Y - hh, Y + hh, p.yawRad, cw, sw, -(cw * X + sw * Z), -(-sw * X + cw * Z)};
+  const bool cylinder = o.shape == ShapeKind::Cylinder;
   int hits = 0;
   for (int v = vb; v < ve; ++v) {
     const float dy = (static_cast<float>(v) - _k.cy) * _invFy;
     for (int u = ub; u < ue; ++u) {
       const float dx = (static_cast<float>(u) - _k.cx) * _invFx;
-      float t = -1.f, nx = 0.f, ny = 0.f, nz = -1.f, s = 0.f, q = 0.f;
-      if (o.shape == ShapeKind::Cylinder) {
-        const float A = dx * dx + 1.f, B = dx * X + Z, C = X * X + Z * Z - R * R;
-        const float disc = B * B - A * C;
-        if (disc < 0.f) continue;
-        const float ts = (B - std::sqrt(disc)) / A;
-        const float ys = ts * dy;
-        if (ys >= yTop && ys <= yBot) {
-          t = ts;
-          nx = (ts * dx - X) / R;
-          nz = (ts - Z) / R;
-          ny = 0.f;
-          // A spinning cylinder turns its texture with it (p.yawRad 0: as ever).
-          s = R * (p.yawRad != 0.f ? std::atan2(nx, -nz) - p.yawRad : std::atan2(nx, -nz));
-          q = ys - yTop;
-        } else {
-          // The cap facing the camera (top when the camera looks down on it).
-          const float yc = yTop > 0.f ? yTop : (yBot < 0.f ? yBot : 0.f);
-          if (yc == 0.f || dy == 0.f) continue;
-          const float tc = yc / dy;
-          if (tc <= 0.f) continue;
-          const float ex = tc * dx - X, ez = tc - Z;
-          if (ex * ex + ez * ez > R * R) continue;
-          t = tc;
-          nx = 0.f;
-          nz = 0.f;
-          ny = yc == yTop ? -1.f : 1.f;
-          s = ex;
-          q = ez;
-        }
-      } else if (p.yawed) {
-        // Slabs in the box's frame (the ray parameter is still camera depth); the
-        // entry face is the one with the largest near distance.
-        const float lx = cw * dx + sw, lz = -sw * dx + cw;  // ray direction, local
-        float tn = -1e30f, tf = 1e30f;
-        int face = 2;
-        auto slab = [&](float o0, float d, float half, int f) {
-          if (d == 0.f) return o0 >= -half && o0 <= half;
-          clipSlab((-half - o0) / d, (half - o0) / d, f, &tn, &tf, &face);
-          return true;
-        };
-        if (!slab(oz, lz, D, 2) || !slab(ox, lx, R, 0)) continue;
-        if (dy != 0.f) {
-          clipSlab(yTop / dy, yBot / dy, 1, &tn, &tf, &face);
-        } else if (yTop > 0.f || yBot < 0.f) {
-          continue;
-        }
-        if (tn > tf || tn <= 0.f) continue;
-        t = tn;
-        const float hx = ox + t * lx, hz = oz + t * lz, py = t * dy;  // hit point, local
-        float nlx = 0.f, nlz = 0.f;
-        if (face == 0) {
-          nlx = lx > 0.f ? -1.f : 1.f;
-          s = hz + D;
-          q = py - yTop;
-        } else if (face == 1) {
-          ny = dy > 0.f ? -1.f : 1.f;
-          s = hx + R;
-          q = hz + D;
-        } else {
-          nlz = lz > 0.f ? -1.f : 1.f;
-          s = hx + R;
-          q = py - yTop;
-        }
-        nx = cw * nlx - sw * nlz;  // the normal back in camera coordinates
-        nz = sw * nlx + cw * nlz;
-      } else {
-        // Slabs; the entry face is the one with the largest near distance.
-        float tn = Z - D, tf = Z + D;
-        int face = 2;
-        if (dx != 0.f) {
-          clipSlab((X - R) / dx, (X + R) / dx, 0, &tn, &tf, &face);
-        } else if (X - R > 0.f || X + R < 0.f) {
-          continue;
-        }
-        if (dy != 0.f) {
-          clipSlab(yTop / dy, yBot / dy, 1, &tn, &tf, &face);
-        } else if (yTop > 0.f || yBot < 0.f) {
-          continue;
-        }
-        if (tn > tf || tn <= 0.f) continue;
-        t = tn;
-        const float px = t * dx, py = t * dy, pz = t;
-        if (face == 0) {
-          nx = dx > 0.f ? -1.f : 1.f;
-          nz = 0.f;
-          s = pz - (Z - D);
-          q = py - yTop;
-        } else if (face == 1) {
-          ny = dy > 0.f ? -1.f : 1.f;
-          nz = 0.f;
-          s = px - (X - R);
-          q = pz - (Z - D);
-        } else {
-          s = px - (X - R);
-          q = py - yTop;
-        }
-      }
+      RayHit h;
+      const bool seen = cylinder  ? hitCylinder(ray, dx, dy, &h)
+                        : p.yawed ? hitYawedBox(ray, dx, dy, &h)
+                                  : hitBox(ray, dx, dy, &h);
+      if (!seen) continue;
       ++hits;
       const int i = v * w + u;
-      if (t >= _zMm[i]) continue;
-      _zMm[i] = t;
+      if (h.t >= _zMm[i]) continue;
+      _zMm[i] = h.t;
       _owner[i] = owner;
-      const Rgb8 c = sample(tex, s, q, invTexel);
-      out.rgb.data()[i] = o.shaded ? shade(c, nx, ny, nz) : c;
+      const Rgb8 c = sample(tex, h.s, h.q, invTexel);
+      out.rgb.data()[i] = o.shaded ? shade(c, h.nx, h.ny, h.nz) : c;
     }
   }
   if (isTarget) _truth.projectedPixels = hits;

@@ -16,8 +16,8 @@ void QueuedPort::lost(const char* why) {
   _connected = false;
   ++_stats.disconnects;
   // The queued messages are lost with the line: count them.
-  for (size_t i = 0; i < _lenCount; ++i)
-    _stats.txDropped += _headCounted[(_lenHead + i) % kMaxQueuedMessages] ? 1u : 0u;
+  _stats.txDropped += _stats.queued;
+  _stats.queued = 0;
   _txHead = _txSize = 0;
   _lenHead = _lenCount = 0;
   _headSentBytes = 0;
@@ -77,6 +77,10 @@ void QueuedPort::flush() {
     _txSize -= r.bytes;
     _headSentBytes += r.bytes;
     if (_headSentBytes < _lens[_lenHead]) return;  // a short write: the line is full
+    if (_headCounted[_lenHead]) {                  // whole on the line
+      ++_stats.sent;
+      --_stats.queued;
+    }
     _headSentBytes = 0;
     _lenHead = (_lenHead + 1) % kMaxQueuedMessages;
     --_lenCount;
@@ -96,7 +100,7 @@ bool QueuedPort::send(const uint8_t* bytes, size_t n, bool counted) {
   _lens[slot] = static_cast<uint16_t>(n);
   _headCounted[slot] = counted;
   ++_lenCount;
-  if (counted) ++_stats.sent;
+  if (counted) ++_stats.queued;
   _lastTxUs = _clock.nowUs();
   flush();
   return true;

@@ -140,6 +140,16 @@ bool PortLock::acquire(const char* devicePath, char* err, size_t errLen) {
       return true;
     }
     if (errno != EEXIST) return true;  // cannot write the lock folder: not ours to manage
+    struct stat st {};
+    if (::lstat(_lockPath, &st) == 0 && !S_ISREG(st.st_mode)) {
+      // A folder (or a link) by the lock's name: no process holds it, and it is not ours to
+      // remove. The port is used, but nothing locks it against another program.
+      std::snprintf(_note, sizeof _note,
+                    "%s: %s is not a lock file (a folder or a link): the port is used without "
+                    "a lock; remove it so the next run can lock the port",
+                    devicePath, _lockPath);
+      return true;
+    }
     const long pid = readPid(_lockPath);
     if (pid == static_cast<long>(::getpid())) {  // ours, left by an earlier open
       _held = true;
@@ -151,7 +161,13 @@ bool PortLock::acquire(const char* devicePath, char* err, size_t errLen) {
                     _lockPath);
       return false;
     }
-    ::unlink(_lockPath);  // stale: said once, as the caller reports note()
+    if (::unlink(_lockPath) != 0) {  // stale, but not ours to remove
+      std::snprintf(_note, sizeof _note,
+                    "%s: cannot remove the stale lock file %s (%s; %s): the port is used "
+                    "without a lock",
+                    devicePath, _lockPath, why, std::strerror(errno));
+      return true;
+    }
     std::snprintf(_note, sizeof _note, "%s: replaced the stale lock file %s (%s)", devicePath,
                   _lockPath, why);
   }

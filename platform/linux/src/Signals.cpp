@@ -28,6 +28,14 @@ void installStopSignals() {
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
   sigaction(SIGHUP, &sa, nullptr);  // the terminal or ssh session went: stop as cleanly
+  // A stop signal that came before this (blocked by a parent: a service manager, a test)
+  // is delivered now, to the handler, rather than lost or fatal.
+  sigset_t stops;
+  sigemptyset(&stops);
+  sigaddset(&stops, SIGINT);
+  sigaddset(&stops, SIGTERM);
+  sigaddset(&stops, SIGHUP);
+  sigprocmask(SIG_UNBLOCK, &stops, nullptr);
   ignoreWriteSignals();
 }
 

@@ -62,6 +62,8 @@ class FrameSource {
   virtual double nominalFps() const { return 0.0; }
   // Frames skipped as unreadable so far (with the skip-bad-frames option).
   virtual int skippedFrames() const { return 0; }
+  // A problem that did not stop the source (ground truth left out), "" when none.
+  virtual const char* warning() const { return ""; }
   // True while no frame can come because the device is not there yet (a source that
   // waits for its camera to be plugged in); callers may tell their peers so.
   virtual bool awaitingDevice() const { return false; }

@@ -137,6 +137,13 @@ class KinectSource final : public FrameSource {
   static void onDepth(_freenect_device* dev, void* data, uint32_t timestamp);
   static void onColour(_freenect_device* dev, void* data, uint32_t timestamp);
   void eventLoop();
+  // The steps of open(), each false after fail().
+  bool checkOptions(const KinectOptions& options);
+  bool checkReplay();
+  bool openDevice(const KinectOptions& options);
+  void resetPairer(const KinectOptions& options);
+  bool setModes(const KinectOptions& options);
+  bool startStreams();
   bool fail(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
   void copyOut(const kinect::Taken& taken, FrameSlot& out);
 

@@ -25,6 +25,7 @@ bool writeFile2(const char* path, const void* a, size_t aLen, const void* b, siz
                 size_t errLen);
 bool isDirectory(const char* path);
 bool isFile(const char* path);
+long long fileSize(const char* path);  // bytes; -1 when it cannot be read
 // Anything by that name (a file, folder, FIFO, even a dangling symlink). An optional file
 // of a recording is read when it exists, so one of the wrong kind is reported, not ignored.
 bool exists(const char* path);

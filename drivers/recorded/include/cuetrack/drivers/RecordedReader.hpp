@@ -24,6 +24,7 @@ class RecordedReader : public FrameSource {
   const char* error() const final { return _error; }
   const char* name() const final { return _name.c_str(); }
   int skippedFrames() const final { return _skipped; }
+  const char* warning() const final { return _warning; }
 
  protected:
   enum class FrameRead : uint8_t {
@@ -58,6 +59,7 @@ class RecordedReader : public FrameSource {
   // down, FrameScale.hpp): every frame must match.
   int _width = 0, _height = 0;
   char _error[768] = "";
+  char _warning[768] = "";
 };
 
 }  // namespace cuetrack

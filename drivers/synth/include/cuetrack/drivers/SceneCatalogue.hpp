@@ -28,6 +28,11 @@ bool makeScene(const char* name, SceneSpec* out);
 // The same, with one line in err for an unknown name:
 // "unknown scene 'NAME' (scenes: moving, twin-crossing, ...)".
 bool makeScene(const char* name, SceneSpec* out, char* err, size_t errLen);
+// A source spec naming a scene ("synth:NAME[:FRAMES]", "still:...:NAME@...") names one the table
+// has: false with the line "synth:NAME: unknown scene ..." in err otherwise, so that every
+// tool refuses it as a bad command line (exit 2) before anything opens. True for any
+// other spec (its reader judges it).
+bool knownSceneSource(const char* spec, char* err, size_t errLen);
 // The names, separated by `separator` (e.g. ", "), cut short to fit len.
 void listSceneNames(const char* separator, char* out, size_t len);
 

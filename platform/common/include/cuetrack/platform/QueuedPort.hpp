@@ -24,8 +24,10 @@ class QueuedPort {
 
   QueuedPort(ByteStream& port, const Clock& clock, Reporter& reporter);
 
-  // Queues one whole message, or nothing (queue full or disconnected). Counts it in
-  // stats().sent or stats().txDropped unless `counted` is false (framing filler).
+  // Queues one whole message, or nothing (queue full or disconnected). Unless `counted`
+  // is false (framing filler) it is counted once: in stats().queued until its last byte is
+  // on the line, then in stats().sent; in stats().txDropped when it is refused or lost
+  // with the queue.
   bool send(const uint8_t* bytes, size_t n, bool counted = true);
   // Flushes, and while disconnected retries the device every kRetryPeriodUs. True on
   // the call that reconnected (the caller resets its decoder).
@@ -35,7 +37,8 @@ class QueuedPort {
   // stats().rxErrors.
   size_t read(uint8_t* buf, size_t cap);
   bool datagrams() const { return _port.datagrams(); }
-  // At exit: waits (at most ~maxMs) until the queue is on the line. True when empty.
+  // At exit: waits (at most ~maxMs) until the queue is on the line. True when empty (what
+  // stays in stats().queued never left: the final line counts it as dropped).
   bool drain(int maxMs);
 
   bool connected() const { return _connected; }

@@ -55,7 +55,9 @@ struct FrameReport {
 };
 
 struct LinkStats {
-  uint32_t sent = 0;       // messages queued for the line
+  // Every message is in one of three: sent + txDropped + queued = all sent so far.
+  uint32_t sent = 0;       // messages written whole to the line
+  uint32_t queued = 0;     // messages waiting in the queue (at exit: never sent, dropped)
   uint32_t txDropped = 0;  // messages dropped: line too slow, or disconnected
   uint32_t rxFrames = 0;   // good inbound frames
   uint32_t rxErrors = 0;   // rejected inbound frames (framing, CRC, malformed commands),

@@ -7,7 +7,10 @@
 namespace cuetrack::platform {
 
 void ignoreWriteSignals();  // SIGPIPE, SIGXFSZ; every program that writes calls it
-void installStopSignals();  // SIGINT, SIGTERM, and ignoreWriteSignals()
+// SIGINT, SIGTERM, SIGHUP (unblocked, so one already pending is seen), and
+// ignoreWriteSignals(). Every tool calls it first thing: a stop at any moment ends the tool
+// with its final line and its documented exit code.
+void installStopSignals();
 bool stopRequested();
 int stopSignal();  // the signal that asked to stop, 0 if none
 
