@@ -61,6 +61,7 @@ TrackResult FilterTracker::update(const Frame& frame) {
   }
   r.box = _box;
   r.confidence = fmath::clampf(best.peak, 0.f, 1.f);
+  _sharpness = best.valid ? best.psr : 0.f;
   r.learned = best.valid;
   return r;
 }

@@ -52,7 +52,7 @@ TrackJudge::Verdict TrackJudge::decide(const TrackEstimate& e, const CueAnswer& 
     // the depth or the contrast said it is not the target). In 2D with filterLeads2d the
     // estimate is the leading filter's box: its peak is the answer.
     const bool filterSees = (filterAnswered || cue.byLead) && !v.miss &&
-                            _peakLevel.like(cue.peak) &&
+                            (_peakLevel.like(cue.peak) || cue.sharp) &&
                             overlap(cue.box, e.box) >= tuning::lost::kOnEstimate;
     _state = _lost.step(_state, v.miss ? 0.f : e.confidence, filterSees);
     if (_state == TrackState::Lost && !wasLost) _lostFrames = 0;

@@ -268,6 +268,7 @@ TrackResult Tracker::followFilter(const Frame& frame, uint64_t t0) {
   cue.valid = true;
   cue.byLead = true;
   cue.peak = lead.confidence;
+  cue.sharp = _lead.sharpness() >= tuning::lost::kLeadSharpness;
   cue.box = e.box;
   bool miss = false;
   const bool learned = decide(frame, e, cue, false, roi, &miss);

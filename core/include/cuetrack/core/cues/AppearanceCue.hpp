@@ -21,8 +21,10 @@ namespace cuetrack {
 struct CueAnswer {
   bool valid = false;       // the map was computed (the window had something to read)
   bool byTemplate = false;  // the gray template's map (else the correlation filter's)
-  // filterLeads2d: the background-aware filter placed the estimate; peak is its own.
+  // filterLeads2d: the background-aware filter placed the estimate; peak is its own,
+  // sharp whether the target still stands out of its map (tuning::lost::kLeadSharpness).
   bool byLead = false;
+  bool sharp = false;
   float peak = CorrelationCue::kNoResponse;  // the map's peak
   Box box{};                                 // the peak's box
   float minPeak = 0.f;  // the peak that is taken for the target (particles drawn at it)

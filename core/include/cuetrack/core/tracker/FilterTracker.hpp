@@ -23,12 +23,15 @@ class FilterTracker {
   InitError init(const Frame& frame, const Box& box);
   TrackResult update(const Frame& frame);
   bool tracking() const { return _tracking; }
+  // The last update's peak to sidelobe ratio: how far the target stands out of the map.
+  float sharpness() const { return _sharpness; }
 
  private:
   BackgroundAwareFilter _filter;
   Box _box{};
   int _imageW = 0, _imageH = 0;
   bool _tracking = false;
+  float _sharpness = 0.f;
 };
 
 }  // namespace cuetrack
