@@ -1,6 +1,7 @@
 #include "cuetrack/core/cues/CellFeatures.hpp"
 
 #include "cuetrack/core/base/FastMath.hpp"
+#include "cuetrack/core/cues/CellSampling.hpp"
 
 namespace cuetrack {
 
@@ -12,21 +13,6 @@ constexpr int kN = kFftSide;
 constexpr int S = CellFeatures::kSamples;
 constexpr int kBins = CellFeatures::kOrientations;
 
-// The bins' boundaries: bin k holds unsigned orientations within pi / 18 of k pi / 9;
-// boundary b is at (2b + 1) pi / 18, as the (cos, sin) of that angle.
-constexpr float kBoundCos[kBins] = {0.984807753f,  0.866025404f,  0.642787610f,
-                                    0.342020143f,  0.000000000f,  -0.342020143f,
-                                    -0.642787610f, -0.866025404f, -0.984807753f};
-constexpr float kBoundSin[kBins] = {0.173648178f, 0.500000000f, 0.766044443f,
-                                    0.939692621f, 1.000000000f, 0.939692621f,
-                                    0.766044443f, 0.500000000f, 0.173648178f};
-
-// Bilinear source position of a sample along an axis: its two pixels and the weight of
-// the second.
-struct Tap {
-  int i0, i1;
-  float f;
-};
 // A histogram value normalised by each of its four blocks, clipped, summed, halved.
 float normalised(float h, const float inv[4]) {
   float v = 0.f;
@@ -37,15 +23,9 @@ float normalised(float h, const float inv[4]) {
   return 0.5f * v;
 }
 
-Tap tapAt(float pos, int size) {
-  const int lo = fmath::floorToInt(pos);
-  Tap t{lo, lo + 1, pos - static_cast<float>(lo)};
-  if (t.i0 < 0) t.i0 = 0;
-  if (t.i1 < 0) t.i1 = 0;
-  if (t.i0 > size - 1) t.i0 = size - 1;
-  if (t.i1 > size - 1) t.i1 = size - 1;
-  return t;
-}
+static_assert(kBins == cellSampling::kOrientations, "the shared orientation bins");
+using cellSampling::Tap;
+using cellSampling::tapAt;
 }  // namespace
 
 bool CellFeatures::extract(const RgbView& rgb, const Box& win, float (*out)[kFftSize]) {
@@ -103,16 +83,9 @@ void CellFeatures::gradients() {
     for (int j = 0; j < S; ++j) gy[j] = dn[j] - up[j];
   }
   for (int k = 0; k < S * S; ++k) {
-    float dx = _dx[k], dy = _dy[k];
+    const float dx = _dx[k], dy = _dy[k];
     _mag[k] = fmath::sqrtf(dx * dx + dy * dy);
-    // Unsigned: into the upper half plane, angle in [0, pi).
-    const bool flip = dy < 0.f || (dy == 0.f && dx < 0.f);
-    dx = flip ? -dx : dx;
-    dy = flip ? -dy : dy;
-    int past = 0;
-    for (int b = 0; b < kBins; ++b) past += (dy * kBoundCos[b] - dx * kBoundSin[b] > 0.f) ? 1 : 0;
-    // Signed: bin k of 2 kBins centred at k pi / 9 over the whole circle.
-    _bin[k] = static_cast<uint8_t>(flip ? (past + kBins) % (2 * kBins) : past);
+    _bin[k] = cellSampling::signedBin(dx, dy);
   }
 }
 

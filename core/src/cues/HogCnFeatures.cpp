@@ -1,6 +1,7 @@
 #include "cuetrack/core/cues/HogCnFeatures.hpp"
 
 #include "cuetrack/core/base/FastMath.hpp"
+#include "cuetrack/core/cues/CellSampling.hpp"
 #include "cuetrack/core/cues/ColourNames.hpp"
 
 namespace cuetrack {
@@ -14,31 +15,12 @@ constexpr int kN = kFftSide;
 constexpr int S = HogCnFeatures::kSamples;
 constexpr int kBins = HogCnFeatures::kOrientations;
 
-// The unsigned bins' boundaries: bin k holds orientations within pi / 18 of k pi / 9;
-// boundary b is at (2b + 1) pi / 18, as the (cos, sin) of that angle.
-constexpr float kBoundCos[kBins] = {0.984807753f,  0.866025404f,  0.642787610f,
-                                    0.342020143f,  0.000000000f,  -0.342020143f,
-                                    -0.642787610f, -0.866025404f, -0.984807753f};
-constexpr float kBoundSin[kBins] = {0.173648178f, 0.500000000f, 0.766044443f,
-                                    0.939692621f, 1.000000000f, 0.939692621f,
-                                    0.766044443f, 0.500000000f, 0.173648178f};
-
-struct Tap {  // bilinear source position along an axis: two pixels, the second's weight
-  int i0, i1;
-  float f;
-};
-Tap tapAt(float pos, int size) {
-  const int lo = fmath::floorToInt(pos);
-  Tap t{lo, lo + 1, pos - static_cast<float>(lo)};
-  if (t.i0 < 0) t.i0 = 0;
-  if (t.i1 < 0) t.i1 = 0;
-  if (t.i0 > size - 1) t.i0 = size - 1;
-  if (t.i1 > size - 1) t.i1 = size - 1;
-  return t;
-}
 uint8_t toByte(float v) {  // v in [0, 255] (a convex mix of bytes), rounded
   return static_cast<uint8_t>(static_cast<int>(v + 0.5f));
 }
+static_assert(kBins == cellSampling::kOrientations, "the shared orientation bins");
+using cellSampling::Tap;
+using cellSampling::tapAt;
 }  // namespace
 
 bool HogCnFeatures::extract(const RgbView& rgb, const Box& win, float (*out)[kFftSize]) {
@@ -79,15 +61,10 @@ bool HogCnFeatures::extract(const RgbView& rgb, const Box& win, float (*out)[kFf
     const float* row = _gray + i * S;
     for (int j = 0; j < S; ++j) {
       const int jl = j > 0 ? j - 1 : j, jr = j < S - 1 ? j + 1 : j;
-      float dx = row[jr] - row[jl], dy = dn[j] - up[j];
+      const float dx = row[jr] - row[jl], dy = dn[j] - up[j];
       const int k = i * S + j;
       _mag[k] = fmath::sqrtf(dx * dx + dy * dy);
-      const bool flip = dy < 0.f || (dy == 0.f && dx < 0.f);  // into [0, pi)
-      dx = flip ? -dx : dx;
-      dy = flip ? -dy : dy;
-      int past = 0;
-      for (int b = 0; b < kBins; ++b) past += (dy * kBoundCos[b] - dx * kBoundSin[b] > 0.f) ? 1 : 0;
-      _bin[k] = static_cast<uint8_t>(flip ? (past + kBins) % (2 * kBins) : past);
+      _bin[k] = cellSampling::signedBin(dx, dy);
     }
   }
   // Cells: orientation histograms, colour names and gray, averaged.

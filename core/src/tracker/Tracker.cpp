@@ -275,7 +275,8 @@ TrackResult Tracker::followFilter(const Frame& frame, uint64_t t0) {
   _lastBox = e.box;
   _prevEstimate = e.particle;
   _space.resetSize(e.box);
-  _filter.fill(e.particle);
+  // Lost now: the particles, gathered on the last box, start the search next frame.
+  if (_judge.state() == TrackState::Lost) _filter.fill(e.particle);
   TrackResult r;
   r.state = _judge.state();
   r.box = lead.box;
